@@ -1,0 +1,71 @@
+// `microbake validate FILE... [--format text|json] [--warnings-as-errors]`: structure, checksums and each
+// kind's invariants. Findings carry stable ids (formats/validation_messages.h). Exit 0 when every file is
+// valid; otherwise the code of the first failing file: 2 unreadable, 5 newer major version, 3 invalid.
+#include <iostream>
+
+#include "cli/command.h"
+#include "cli/common_options.h"
+#include "formats/atomic_file.h"
+#include "formats/error.h"
+#include "formats/validate.h"
+
+namespace mbk::cli {
+namespace {
+
+class ValidateCommand : public Command {
+ public:
+  void add_options(CLI::App& app) override {
+    app.add_option("files", options_.files, "Assets (.mbk) to check")->required();
+    add_format_option(app, options_.format);
+    app.add_flag("--warnings-as-errors", options_.warnings_as_errors, "Treat warnings as errors");
+  }
+
+  int run() override {
+    int exit_code = 0;
+    nlohmann::json messages = nlohmann::json::array();
+    for (const std::string& file : options_.files) {
+      std::vector<Finding> findings;
+      int file_code = 0;
+      try {
+        findings = validate_asset(read_file_bytes(file));
+      } catch (const Error& e) {
+        if (e.code() != ExitCode::io_failure) throw;
+        std::cerr << "microbake: error: " << e.message() << "\n";
+        file_code = static_cast<int>(ExitCode::io_failure);
+      }
+      if (file_code == 0 && has_errors(findings, options_.warnings_as_errors)) {
+        bool newer = false;
+        for (const auto& f : findings) newer = newer || f.id == msg::newer_major.id;
+        file_code = static_cast<int>(newer ? ExitCode::unsupported : ExitCode::invalid_input);
+      }
+      if (exit_code == 0) exit_code = file_code;
+      for (const Finding& f : findings) {
+        nlohmann::json details = f.details;
+        details["file"] = file;
+        messages.push_back(
+            {{"id", f.id}, {"severity", severity_name(f.severity)}, {"message", f.message}, {"details", details}});
+      }
+      if (options_.format == OutputFormat::text && file_code != static_cast<int>(ExitCode::io_failure)) {
+        std::cout << file << ": " << (file_code == 0 ? "valid" : "INVALID") << "\n";
+        for (const Finding& f : findings)
+          std::cout << "  " << severity_name(f.severity) << " " << f.id << ": " << f.message << "\n";
+      }
+    }
+    if (options_.format == OutputFormat::json)
+      std::cout << nlohmann::json{{"valid", exit_code == 0}, {"messages", messages}}.dump(2) << "\n";
+    return exit_code;
+  }
+
+ private:
+  struct Options {
+    std::vector<std::string> files;
+    OutputFormat format = OutputFormat::text;
+    bool warnings_as_errors = false;
+  } options_;
+};
+
+}  // namespace
+
+std::unique_ptr<Command> make_validate_command() { return std::make_unique<ValidateCommand>(); }
+
+}  // namespace mbk::cli

@@ -1,0 +1,69 @@
+// Shared options (see common_options.h).
+#include "cli/common_options.h"
+
+#include "formats/atomic_file.h"
+#include "formats/error.h"
+#include "libbake/core/parallel.h"
+
+namespace mbk::cli {
+
+ProgressMode RunOptions::progress_mode() const {
+  if (quiet || progress == "never") return ProgressMode::never;
+  if (progress == "always") return ProgressMode::always;
+  return ProgressMode::automatic;
+}
+
+void RunOptions::apply() const { set_thread_count(threads); }
+
+void add_run_options(CLI::App& app, RunOptions& o) {
+  app.add_option("--threads", o.threads, "Worker threads (0 = all cores); outputs do not depend on it")
+      ->check(CLI::Range(0, 1024))
+      ->default_val(0);
+  app.add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
+  app.add_option("--progress", o.progress, "Progress bar on stderr: auto (only on a terminal), always, never")
+      ->check(CLI::IsMember({"auto", "always", "never"}))
+      ->default_val("auto");
+}
+
+void add_format_option(CLI::App& app, OutputFormat& format) {
+  app.add_option("--format", format, "Report format: text or json")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, OutputFormat>{{"text", OutputFormat::text}, {"json", OutputFormat::json}}))
+      ->default_str("text");
+}
+
+void OutputOption::write_with(const std::function<void(const std::filesystem::path&)>& produce) const {
+  AtomicFile file(path);
+  produce(file.temporary_path());
+  file.commit();
+}
+
+void OutputOption::write_bytes(const std::vector<uint8_t>& bytes) const {
+  AtomicFile file(path);
+  file.write_all(bytes);
+  file.commit();
+}
+
+void add_output_option(CLI::App& app, OutputOption& output, const std::string& what) {
+  app.add_option("-o,--output", output.path, "Write the " + what + " here (written whole or not at all)")->required();
+}
+
+NormalMapLoadOptions NormalMapInput::load_options() const {
+  NormalMapLoadOptions o;
+  o.convention = parse_convention(convention);
+  o.invalid = repair_invalid ? InvalidTexelPolicy::repair : InvalidTexelPolicy::error;
+  return o;
+}
+
+void add_normal_map_input(CLI::App& app, NormalMapInput& input) {
+  app.add_option("input", input.path, "Normal map (any image OpenImageIO reads: PNG, EXR, TGA, JPEG, TIFF)")
+      ->required();
+  app.add_option("--convention", input.convention,
+                 "Green channel convention of the input: +Y (OpenGL) or -Y (DirectX); any case")
+      ->default_val("+Y");
+  app.add_flag(
+      "--repair-invalid", input.repair_invalid,
+      "Repair invalid texels instead of failing: NaN/Inf/zero -> (0,0,1), z < 0 -> z = 0 (recorded in metadata)");
+}
+
+}  // namespace mbk::cli

@@ -1,0 +1,49 @@
+// Options written once and reused by every command, with the same names and wording everywhere:
+// run options (--threads, --quiet, --progress), --format text|json, -o/--output (whose temporary-then-
+// rename writing lives here, so no command can forget it), and the normal-map input (+Y/-Y, repair).
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "libbake/core/progress.h"
+#include "libbake/image/normal_map.h"
+
+namespace mbk::cli {
+
+struct RunOptions {
+  int threads = 0;
+  bool quiet = false;
+  std::string progress = "auto";
+  // Applies --threads, and builds the progress reporter --progress/--quiet ask for.
+  ProgressMode progress_mode() const;
+  void apply() const;
+};
+void add_run_options(CLI::App& app, RunOptions& options);
+
+enum class OutputFormat { text, json };
+void add_format_option(CLI::App& app, OutputFormat& format);
+
+struct OutputOption {
+  std::string path;
+  // Calls produce(temporary) to write the output to a temporary path beside the destination (same
+  // extension), then flushes and renames it into place. On any exception the temporary is removed.
+  void write_with(const std::function<void(const std::filesystem::path& temporary)>& produce) const;
+  void write_bytes(const std::vector<uint8_t>& bytes) const;
+};
+// -o/--output, required. `what` describes the file (e.g. "output asset (.mbk)").
+void add_output_option(CLI::App& app, OutputOption& output, const std::string& what);
+
+struct NormalMapInput {
+  std::string path;
+  std::string convention = "+Y";
+  bool repair_invalid = false;
+  NormalMapLoadOptions load_options() const;
+};
+// The positional IN argument plus --convention and --repair-invalid.
+void add_normal_map_input(CLI::App& app, NormalMapInput& input);
+
+}  // namespace mbk::cli

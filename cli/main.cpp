@@ -1,0 +1,87 @@
+// microbake's entry point: the only table of commands, and the only place where errors become exit codes
+// (DESIGN.md, "The command line"). Every error is printed as one line `microbake: error: <what> (<where>)`.
+#include <cstdio>
+#include <iostream>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/command.h"
+#include "formats/error.h"
+
+namespace mbk::cli {
+namespace {
+
+std::vector<CommandEntry> command_table() {
+  return {
+      {"info", "Print an asset's header, metadata and sections", make_info_command},
+      {"validate", "Check assets' structure, checksums and invariants (exit 3 when invalid)", make_validate_command},
+      {"gen", "Generate a procedural example normal map (bumps, brushed, scratches, flakes, leather, panels)",
+       make_gen_command},
+      {"mip", "Bake a normal map's MIP pyramid (asset kind mip)", make_mip_command},
+      {"bake", "Bake the assets a scene's effects need, skipping up-to-date ones", make_bake_command},
+      {"render", "Render a scene with the reference shader evaluator (or its brute-force --reference)",
+       make_render_command},
+      {"compare", "Error metrics between two images (RMSE, relative MSE, PSNR; exit 6 above --max-rmse)",
+       make_compare_command},
+  };
+}
+
+int report(const std::string& message, ExitCode code) {
+  std::fprintf(stderr, "microbake: error: %s\n", message.c_str());
+  return static_cast<int>(code);
+}
+
+}  // namespace
+
+int main_impl(int argc, char** argv) {
+  CLI::App app{
+      "microbake: bakes example normal maps into versioned .mbk assets and renders what they mean.\n"
+      "Exit codes: 0 success, 1 bad command line, 2 I/O failure, 3 invalid input, 4 runtime failure,\n"
+      "5 unsupported, 6 difference above threshold (compare).",
+      "microbake"};
+  app.set_version_flag("--version", std::string("microbake ") + MICROBAKE_VERSION);
+  app.require_subcommand(1);
+  auto table = command_table();
+  std::vector<std::unique_ptr<Command>> commands;
+  std::vector<CLI::App*> subcommands;
+  for (const auto& entry : table) {
+    commands.push_back(entry.make());
+    CLI::App* sub = app.add_subcommand(entry.name, entry.summary);
+    commands.back()->add_options(*sub);
+    subcommands.push_back(sub);
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::string what = e.what();
+    std::string where = "see 'microbake --help'";
+    for (auto* sub : subcommands)
+      if (sub->parsed()) where = "see 'microbake " + sub->get_name() + " --help'";
+    return report(what + " (" + where + ")", ExitCode::bad_command_line);
+  }
+  try {
+    for (size_t i = 0; i < subcommands.size(); ++i) {
+      if (!subcommands[i]->parsed()) continue;
+      commands[i]->check();
+      return commands[i]->run();
+    }
+    return report("no command given (see 'microbake --help')", ExitCode::bad_command_line);
+  } catch (const Error& e) {
+    return report(e.message(), e.code());
+  } catch (const std::bad_alloc&) {
+    return report("out of memory", ExitCode::runtime_failure);
+  } catch (const std::exception& e) {
+    return report(std::string("internal error: ") + e.what(), ExitCode::runtime_failure);
+  }
+}
+
+}  // namespace mbk::cli
+
+int main(int argc, char** argv) { return mbk::cli::main_impl(argc, argv); }

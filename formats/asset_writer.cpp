@@ -1,0 +1,104 @@
+// Serializes the .mbk container, version 1.0 (formats/SPEC.md).
+#include "formats/asset_writer.h"
+
+#include <xxhash.h>
+
+#include "formats/asset_kind.h"
+#include "formats/atomic_file.h"
+#include "formats/byte_io.h"
+
+namespace mbk {
+
+AssetWriter::AssetWriter(std::string_view kind_name, nlohmann::json metadata) : metadata_(std::move(metadata)) {
+  const AssetKind* kind = find_kind(kind_name);
+  if (!kind) throw Error(ExitCode::runtime_failure, "internal: unknown asset kind '" + std::string(kind_name) + "'");
+  kind_id_ = kind->id;
+  if (!metadata_.is_object()) throw Error(ExitCode::runtime_failure, "internal: metadata must be a JSON object");
+  for (const char* key : {"inputs", "parameters", "conventions", "statistics"})
+    if (!metadata_.contains(key))
+      throw Error(ExitCode::runtime_failure, std::string("internal: metadata lacks '") + key + "'");
+  metadata_["kind"] = std::string(kind_name);
+  metadata_["producer"] = {{"name", "microbake"}, {"version", MICROBAKE_VERSION}};
+}
+
+void AssetWriter::add_bytes(const std::string& name, ElementType type, std::vector<uint64_t> shape,
+                            std::span<const uint8_t> bytes) {
+  if (!is_valid_section_name(name))
+    throw Error(ExitCode::runtime_failure, "internal: invalid section name '" + name + "'");
+  for (const auto& s : sections_)
+    if (s.info.name == name) throw Error(ExitCode::runtime_failure, "internal: duplicate section '" + name + "'");
+  if (shape.empty() || shape.size() > kMaxRank)
+    throw Error(ExitCode::runtime_failure, "internal: rank outside 1..6 for '" + name + "'");
+  uint64_t count = 1;
+  for (uint64_t d : shape)
+    if (__builtin_mul_overflow(count, d, &count))
+      throw Error(ExitCode::runtime_failure, "internal: shape overflow for '" + name + "'");
+  if (count * element_size(static_cast<uint32_t>(type)) != bytes.size())
+    throw Error(ExitCode::runtime_failure, "internal: byte length does not match the shape of '" + name + "'");
+  PendingSection s;
+  s.info.name = name;
+  s.info.type = type;
+  s.info.shape = std::move(shape);
+  s.info.byte_length = bytes.size();
+  s.info.checksum = checksum_of(bytes.data(), bytes.size());
+  s.bytes.assign(bytes.begin(), bytes.end());
+  sections_.push_back(std::move(s));
+}
+
+std::vector<uint8_t> AssetWriter::serialize() const {
+  const std::string meta = metadata_.dump();  // keys sorted (std::map): byte-identical for identical content
+  const uint64_t meta_offset = kHeaderSize;
+  const uint64_t table_offset = align_up(meta_offset + meta.size(), kSectionAlignment);
+  const uint64_t table_size = uint64_t(kSectionEntrySize) * sections_.size();
+  uint64_t cursor = align_up(table_offset + table_size, kSectionAlignment);
+  std::vector<uint64_t> offsets;
+  for (const auto& s : sections_) {
+    offsets.push_back(cursor);
+    cursor = align_up(cursor + s.bytes.size(), kSectionAlignment);
+  }
+  // The file ends right after the last section's data (no trailing padding).
+  uint64_t file_size = sections_.empty() ? table_offset + table_size : offsets.back() + sections_.back().bytes.size();
+
+  std::vector<uint8_t> out(file_size, 0);
+  std::copy(kMagic.begin(), kMagic.end(), out.begin());
+  store_le<uint16_t>(&out[8], major_);
+  store_le<uint16_t>(&out[10], minor_);
+  store_le<uint32_t>(&out[12], kind_id_);
+  store_le<uint64_t>(&out[16], file_size);
+  store_le<uint64_t>(&out[24], meta_offset);
+  store_le<uint64_t>(&out[32], meta.size());
+  store_le<uint64_t>(&out[40], table_offset);
+  store_le<uint32_t>(&out[48], static_cast<uint32_t>(sections_.size()));
+  store_le<uint32_t>(&out[52], kSectionEntrySize);
+  std::copy(meta.begin(), meta.end(), out.begin() + meta_offset);
+
+  for (size_t i = 0; i < sections_.size(); ++i) {
+    const SectionInfo& info = sections_[i].info;
+    uint8_t* e = &out[table_offset + i * kSectionEntrySize];
+    std::copy(info.name.begin(), info.name.end(), e);
+    store_le<uint32_t>(e + 32, static_cast<uint32_t>(info.type));
+    store_le<uint32_t>(e + 36, static_cast<uint32_t>(info.shape.size()));
+    for (size_t d = 0; d < info.shape.size(); ++d) store_le<uint64_t>(e + 40 + 8 * d, info.shape[d]);
+    store_le<uint64_t>(e + 88, offsets[i]);
+    store_le<uint64_t>(e + 96, info.byte_length);
+    store_le<uint64_t>(e + 104, info.checksum);
+    std::copy(sections_[i].bytes.begin(), sections_[i].bytes.end(), out.begin() + offsets[i]);
+  }
+
+  XXH3_state_t* state = XXH3_createState();
+  XXH3_64bits_reset(state);
+  XXH3_64bits_update(state, out.data(), kChecksummedHeaderBytes);
+  XXH3_64bits_update(state, out.data() + meta_offset, meta.size());
+  XXH3_64bits_update(state, out.data() + table_offset, table_size);
+  store_le<uint64_t>(&out[56], XXH3_64bits_digest(state));
+  XXH3_freeState(state);
+  return out;
+}
+
+void AssetWriter::write(const std::filesystem::path& path) const {
+  AtomicFile file(path);
+  file.write_all(serialize());
+  file.commit();
+}
+
+}  // namespace mbk

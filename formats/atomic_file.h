@@ -1,0 +1,38 @@
+// Outputs appear only when complete: AtomicFile writes to a temporary file in the destination folder
+// (same extension, so extension-driven writers such as OpenImageIO pick the right format), and commit()
+// flushes it to disk and renames it into place. Destroyed without commit(), it removes the temporary, so a
+// failed command never leaves a partial output behind.
+#pragma once
+
+#include <filesystem>
+#include <span>
+#include <vector>
+
+namespace mbk {
+
+class AtomicFile {
+ public:
+  explicit AtomicFile(std::filesystem::path destination);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  // Where to write before commit(): ".<stem>.partial-<pid>-<n><ext>" beside the destination.
+  const std::filesystem::path& temporary_path() const { return temporary_; }
+  const std::filesystem::path& destination() const { return destination_; }
+
+  // Writes bytes to the temporary path (replacing its content). Throws Error(io_failure).
+  void write_all(std::span<const uint8_t> bytes);
+  // fsyncs the temporary and renames it onto the destination. Throws Error(io_failure).
+  void commit();
+
+ private:
+  std::filesystem::path destination_;
+  std::filesystem::path temporary_;
+  bool committed_ = false;
+};
+
+// Reads a whole file. Throws Error(io_failure) naming the path when it cannot.
+std::vector<uint8_t> read_file_bytes(const std::filesystem::path& path);
+
+}  // namespace mbk

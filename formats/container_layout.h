@@ -1,0 +1,59 @@
+// The fixed byte layout of the .mbk container, version 1.0 (formats/SPEC.md is the normative description;
+// this header mirrors it field by field). All integers are little-endian.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "formats/element_type.h"
+
+namespace mbk {
+
+// "\x89MBK\r\n\x1a\n": the high byte catches 7-bit channels, CR LF and LF catch text-mode line-ending
+// conversion in either direction, and 0x1A stops `type` on DOS (the PNG signature's reasoning).
+inline constexpr std::array<uint8_t, 8> kMagic = {0x89, 'M', 'B', 'K', '\r', '\n', 0x1A, '\n'};
+
+inline constexpr uint16_t kFormatMajor = 1;
+inline constexpr uint16_t kFormatMinor = 0;
+
+inline constexpr uint64_t kHeaderSize = 64;              // bytes 0..63
+inline constexpr uint64_t kChecksummedHeaderBytes = 56;  // the header checksum covers bytes 0..55
+inline constexpr uint32_t kSectionEntrySize = 128;       // v1.0 entries; readers accept larger (later minors)
+inline constexpr uint64_t kSectionAlignment = 64;        // every section's data starts at a multiple of this
+inline constexpr size_t kSectionNameBytes = 32;          // NUL-padded, 1..31 characters
+inline constexpr size_t kMaxRank = 6;
+inline constexpr uint32_t kMaxSections = 65536;
+
+struct ContainerHeader {
+  uint16_t major = kFormatMajor;
+  uint16_t minor = kFormatMinor;
+  uint32_t kind = 0;
+  uint64_t file_size = 0;
+  uint64_t metadata_offset = 0;
+  uint64_t metadata_size = 0;
+  uint64_t section_table_offset = 0;
+  uint32_t section_count = 0;
+  uint32_t section_entry_size = kSectionEntrySize;
+  uint64_t checksum = 0;  // XXH3-64 of header bytes 0..55, then the metadata, then the section table
+};
+
+struct SectionInfo {
+  std::string name;
+  ElementType type = ElementType::u8;
+  std::vector<uint64_t> shape;  // rank 1..6, outermost dimension first (row-major)
+  uint64_t offset = 0;          // absolute, 64-byte aligned
+  uint64_t byte_length = 0;     // product(shape) * element size
+  uint64_t checksum = 0;        // XXH3-64 (seed 0) of the section's bytes
+
+  uint64_t element_count() const;  // product of shape; only call on a validated section
+};
+
+// Section names: 1..31 characters from [a-z0-9_.-], starting with a letter.
+bool is_valid_section_name(const std::string& name);
+
+// 64-bit XXH3 (seed 0), the one checksum of the format.
+uint64_t checksum_of(const void* data, size_t size);
+
+}  // namespace mbk

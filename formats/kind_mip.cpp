@@ -1,0 +1,109 @@
+// Asset kind 1, `mip`: the MIP pyramid of a normal map, the baseline every filtering technique is compared
+// with (and the input of Toksvig-style roughening, whose lengths it keeps). Sections level_0 .. level_{L-1},
+// each f32 [height, width, 3]: level 0 holds the unit normals, level k the unnormalised mean of the finest
+// normals each texel covers (formats/mip_levels.h). formats/SPEC.md, "Kind 1: mip".
+#include <cmath>
+
+#include "formats/asset.h"
+#include "formats/asset_kind.h"
+#include "formats/mip_levels.h"
+
+namespace mbk {
+namespace {
+
+std::string level_name(size_t k) { return "level_" + std::to_string(k); }
+
+// Tolerances: level 0 is renormalised in float (|n| - 1 within a few ulps); coarser levels are means
+// accumulated in double and stored in float, so a parent matches its weighted children to float rounding.
+constexpr double kUnitTolerance = 1e-5;
+constexpr double kMeanTolerance = 2e-6;
+
+void check_mip(const Asset& a, std::vector<Finding>& out) {
+  const auto& params = a.metadata()["parameters"];
+  if (!params.is_object() || !params.contains("width") || !params.contains("height") ||
+      !params["width"].is_number_unsigned() || !params["height"].is_number_unsigned()) {
+    out.push_back(make_finding(msg::mip_bad_parameters, "parameters.width/height missing"));
+    return;
+  }
+  const auto sizes = mip_level_sizes(params["width"].get<uint32_t>(), params["height"].get<uint32_t>());
+  if (sizes.empty()) {
+    out.push_back(make_finding(msg::mip_bad_parameters, "zero width or height"));
+    return;
+  }
+  std::vector<std::vector<float>> levels;
+  for (size_t k = 0; k < sizes.size(); ++k) {
+    const SectionInfo* s = a.find(level_name(k));
+    if (!s || s->type != ElementType::f32 || s->shape != std::vector<uint64_t>{sizes[k].height, sizes[k].width, 3}) {
+      out.push_back(make_finding(msg::mip_level_shape, "'" + level_name(k) + "' should be f32 [" +
+                                                           std::to_string(sizes[k].height) + ", " +
+                                                           std::to_string(sizes[k].width) + ", 3]"));
+      return;
+    }
+    levels.push_back(a.read<float>(level_name(k)));
+  }
+  if (a.find(level_name(sizes.size()))) {
+    out.push_back(make_finding(msg::mip_level_shape, "more levels than a " + std::to_string(sizes[0].width) + "x" +
+                                                         std::to_string(sizes[0].height) + " image has"));
+    return;
+  }
+  for (size_t k = 0; k < levels.size(); ++k)
+    for (size_t i = 0; i < levels[k].size(); ++i)
+      if (!std::isfinite(levels[k][i])) {
+        out.push_back(make_finding(msg::mip_non_finite, level_name(k) + " element " + std::to_string(i)));
+        return;
+      }
+  const uint32_t W = sizes[0].width, H = sizes[0].height;
+  for (size_t k = 0; k < levels.size(); ++k) {
+    const auto& L = levels[k];
+    for (uint32_t y = 0; y < sizes[k].height; ++y)
+      for (uint32_t x = 0; x < sizes[k].width; ++x) {
+        const float* n = &L[(size_t(y) * sizes[k].width + x) * 3];
+        const double len = std::sqrt(double(n[0]) * n[0] + double(n[1]) * n[1] + double(n[2]) * n[2]);
+        const std::string at = level_name(k) + " texel (" + std::to_string(x) + ", " + std::to_string(y) + ")";
+        if (k == 0 && std::abs(len - 1.0) > kUnitTolerance) {
+          out.push_back(make_finding(msg::mip_level0_not_unit, at + ": length " + std::to_string(len)));
+          return;
+        }
+        if (len > 1.0 + kUnitTolerance) {
+          out.push_back(make_finding(msg::mip_length_exceeds_one, at + ": length " + std::to_string(len)));
+          return;
+        }
+        if (k == 0) continue;
+        // The parent is the coverage-weighted mean of its children in level k-1.
+        const auto& C = levels[k - 1];
+        const uint32_t cw = sizes[k - 1].width, ch = sizes[k - 1].height;
+        double sum[3] = {0, 0, 0}, weight = 0;
+        for (uint32_t cy = 2 * y; cy < std::min(2 * y + 2, ch); ++cy)
+          for (uint32_t cx = 2 * x; cx < std::min(2 * x + 2, cw); ++cx) {
+            const double w = double(mip_coverage(W, k - 1, cx)) * mip_coverage(H, k - 1, cy);
+            for (int c = 0; c < 3; ++c) sum[c] += w * C[(size_t(cy) * cw + cx) * 3 + c];
+            weight += w;
+          }
+        for (int c = 0; c < 3; ++c)
+          if (std::abs(sum[c] / weight - n[c]) > kMeanTolerance) {
+            out.push_back(make_finding(msg::mip_parent_not_mean, at + ": channel " + std::to_string(c) + " is " +
+                                                                     std::to_string(n[c]) + ", children give " +
+                                                                     std::to_string(sum[c] / weight)));
+            return;
+          }
+      }
+  }
+}
+
+}  // namespace
+
+AssetKind mip_kind() {
+  AssetKind k;
+  k.id = 1;
+  k.name = "mip";
+  k.summary = "MIP pyramid of a normal map (unnormalised mean normals per level)";
+  k.required_sections = {{"level_0", {ElementType::f32}, 3}};
+  k.knows_section = [](const std::string& name) {
+    if (name.rfind("level_", 0) != 0 || name.size() == 6) return false;
+    return name.find_first_not_of("0123456789", 6) == std::string::npos;
+  };
+  k.check_invariants = check_mip;
+  return k;
+}
+
+}  // namespace mbk

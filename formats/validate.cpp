@@ -1,0 +1,25 @@
+// Runs every check on an asset's bytes and collects findings (see validate.h).
+#include "formats/validate.h"
+
+#include "formats/asset.h"
+
+namespace mbk {
+
+std::vector<Finding> validate_asset(std::span<const uint8_t> bytes) {
+  std::vector<Finding> findings;
+  auto parsed = parse_container(bytes, findings);
+  if (!parsed) return findings;
+  check_sections(*parsed, bytes, findings);
+  if (has_errors(findings)) return findings;
+  Asset asset = Asset::parse(std::vector<uint8_t>(bytes.begin(), bytes.end()), "");
+  if (asset.kind().check_invariants) asset.kind().check_invariants(asset, findings);
+  return findings;
+}
+
+bool has_errors(const std::vector<Finding>& findings, bool warnings_as_errors) {
+  for (const Finding& f : findings)
+    if (f.severity == Severity::error || warnings_as_errors) return true;
+  return false;
+}
+
+}  // namespace mbk

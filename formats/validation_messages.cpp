@@ -1,0 +1,64 @@
+// The table of validation findings (see validation_messages.h).
+#include "formats/validation_messages.h"
+
+#include <array>
+
+namespace mbk {
+
+std::string_view severity_name(Severity s) { return s == Severity::error ? "error" : "warning"; }
+
+Finding make_finding(const MessageInfo& info, const std::string& specifics, nlohmann::json details) {
+  Finding f;
+  f.id = info.id;
+  f.severity = info.severity;
+  f.message = specifics.empty() ? std::string(info.title) : std::string(info.title) + ": " + specifics;
+  f.details = std::move(details);
+  return f;
+}
+
+std::span<const MessageInfo> all_messages() {
+  using namespace msg;
+  static const std::array kAll = {
+      file_too_small,
+      bad_magic,
+      text_mode_corruption,
+      file_size_mismatch,
+      padding_not_zero,
+      newer_major,
+      bad_major,
+      newer_minor,
+      header_checksum_mismatch,
+      metadata_out_of_bounds,
+      section_table_out_of_bounds,
+      section_entry_too_small,
+      too_many_sections,
+      metadata_not_json,
+      metadata_missing_key,
+      unknown_kind,
+      kind_mismatch,
+      regions_overlap,
+      bad_section_name,
+      duplicate_section,
+      unknown_element_type,
+      bad_rank,
+      shape_overflow,
+      length_mismatch,
+      section_out_of_bounds,
+      misaligned_section,
+      sections_overlap,
+      section_checksum_mismatch,
+      reserved_not_zero,
+      missing_required_section,
+      wrong_section_type,
+      unknown_section,
+      mip_non_finite,
+      mip_level_shape,
+      mip_length_exceeds_one,
+      mip_level0_not_unit,
+      mip_parent_not_mean,
+      mip_bad_parameters,
+  };
+  return kAll;
+}
+
+}  // namespace mbk

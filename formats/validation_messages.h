@@ -1,0 +1,93 @@
+// Every finding `microbake validate` can report, in one table (formats/SPEC.md, "Validation findings").
+// Ids are stable and grouped by thousand: 1xxx container, 2xxx header and metadata, 3xxx sections, and
+// 10000 + 1000 * kind id for the invariants of each asset kind. Never reuse or renumber an id.
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
+namespace mbk {
+
+enum class Severity { error, warning };
+std::string_view severity_name(Severity s);
+
+struct MessageInfo {
+  int id;
+  Severity severity;
+  std::string_view title;
+};
+
+struct Finding {
+  int id = 0;
+  Severity severity = Severity::error;
+  std::string message;  // title, then ": " and the specifics
+  nlohmann::json details = nlohmann::json::object();
+};
+
+Finding make_finding(const MessageInfo& info, const std::string& specifics,
+                     nlohmann::json details = nlohmann::json::object());
+
+namespace msg {
+// 1xxx: the file as a whole
+inline constexpr MessageInfo file_too_small{1001, Severity::error, "file too small to hold an .mbk header"};
+inline constexpr MessageInfo bad_magic{1002, Severity::error, "not an .mbk file (bad magic)"};
+inline constexpr MessageInfo text_mode_corruption{1003, Severity::error,
+                                                  "file damaged by a text-mode line-ending conversion"};
+inline constexpr MessageInfo file_size_mismatch{
+    1004, Severity::error, "file size differs from the size recorded in the header (truncated or extended)"};
+inline constexpr MessageInfo padding_not_zero{1005, Severity::error, "padding between regions is not zero"};
+// 2xxx: header and metadata
+inline constexpr MessageInfo newer_major{2001, Severity::error, "asset written by a newer major format version"};
+inline constexpr MessageInfo bad_major{2002, Severity::error, "invalid major format version"};
+inline constexpr MessageInfo newer_minor{2003, Severity::warning,
+                                         "asset written by a newer minor format version; its additions are ignored"};
+inline constexpr MessageInfo header_checksum_mismatch{2004, Severity::error,
+                                                      "header/metadata/section-table checksum mismatch"};
+inline constexpr MessageInfo metadata_out_of_bounds{2005, Severity::error, "metadata block out of bounds"};
+inline constexpr MessageInfo section_table_out_of_bounds{2006, Severity::error, "section table out of bounds"};
+inline constexpr MessageInfo section_entry_too_small{2007, Severity::error,
+                                                     "section entry size smaller than 128 bytes"};
+inline constexpr MessageInfo too_many_sections{2008, Severity::error, "too many sections"};
+inline constexpr MessageInfo metadata_not_json{2009, Severity::error, "metadata is not a UTF-8 JSON object"};
+inline constexpr MessageInfo metadata_missing_key{2010, Severity::error, "metadata lacks a required key"};
+inline constexpr MessageInfo unknown_kind{2011, Severity::error, "unknown asset kind"};
+inline constexpr MessageInfo kind_mismatch{2012, Severity::error, "metadata kind differs from the header's kind id"};
+inline constexpr MessageInfo regions_overlap{2013, Severity::error, "header, metadata and section table overlap"};
+// 3xxx: sections
+inline constexpr MessageInfo bad_section_name{3001, Severity::error, "invalid section name"};
+inline constexpr MessageInfo duplicate_section{3002, Severity::error, "duplicate section name"};
+inline constexpr MessageInfo unknown_element_type{3003, Severity::error, "unknown element type"};
+inline constexpr MessageInfo bad_rank{3004, Severity::error, "section rank outside 1..6"};
+inline constexpr MessageInfo shape_overflow{3005, Severity::error, "section shape product overflows"};
+inline constexpr MessageInfo length_mismatch{3006, Severity::error,
+                                             "section byte length differs from shape x element size"};
+inline constexpr MessageInfo section_out_of_bounds{3007, Severity::error, "section data out of bounds"};
+inline constexpr MessageInfo misaligned_section{3008, Severity::error, "section data not 64-byte aligned"};
+inline constexpr MessageInfo sections_overlap{3009, Severity::error, "section data overlaps another region"};
+inline constexpr MessageInfo section_checksum_mismatch{3010, Severity::error, "section checksum mismatch"};
+inline constexpr MessageInfo reserved_not_zero{3011, Severity::error,
+                                               "reserved bytes or unused shape entries are not zero"};
+inline constexpr MessageInfo missing_required_section{3012, Severity::error,
+                                                      "a section required by the asset kind is missing"};
+inline constexpr MessageInfo wrong_section_type{3013, Severity::error,
+                                                "section has the wrong element type or rank for its kind"};
+inline constexpr MessageInfo unknown_section{3014, Severity::warning,
+                                             "section unknown to this asset kind (ignored by readers)"};
+// 11xxx: kind 1, `mip` (normal MIP pyramid)
+inline constexpr MessageInfo mip_non_finite{11001, Severity::error, "mip: non-finite value"};
+inline constexpr MessageInfo mip_level_shape{11002, Severity::error, "mip: level sizes do not follow the halving rule"};
+inline constexpr MessageInfo mip_length_exceeds_one{11003, Severity::error, "mip: averaged normal longer than 1"};
+inline constexpr MessageInfo mip_level0_not_unit{11004, Severity::error, "mip: finest-level normal not unit length"};
+inline constexpr MessageInfo mip_parent_not_mean{11005, Severity::error,
+                                                 "mip: texel is not the mean of the finest normals it covers"};
+inline constexpr MessageInfo mip_bad_parameters{11006, Severity::error,
+                                                "mip: parameters missing or inconsistent with the sections"};
+}  // namespace msg
+
+// All of the above, for documentation and the uniqueness test.
+std::span<const MessageInfo> all_messages();
+
+}  // namespace mbk

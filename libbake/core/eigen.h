@@ -1,0 +1,15 @@
+// Eigen aliases used across libbake. Vectors are double unless a name says otherwise: numerical code
+// computes in double and stores float.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace mbk {
+using Vec2 = Eigen::Vector2d;
+using Vec3 = Eigen::Vector3d;
+using Vec2f = Eigen::Vector2f;
+using Vec3f = Eigen::Vector3f;
+using Mat2 = Eigen::Matrix2d;
+using Mat3 = Eigen::Matrix3d;
+}  // namespace mbk

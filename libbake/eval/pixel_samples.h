@@ -1,0 +1,22 @@
+// Stratified sub-pixel sample positions. `count` samples sit on a cols x rows grid (rows = the largest
+// divisor of count not above sqrt(count), so 16 -> 4 x 4, 8 -> 4 x 2, 7 -> 7 x 1), one per cell, jittered
+// inside its cell by PCG hashes of (pixel x, pixel y, sample index, axis) (libbake/core/hash.h). A pixel's
+// samples depend only on its coordinates, so images are identical whatever --threads is.
+#pragma once
+
+#include <cstdint>
+
+#include "libbake/core/eigen.h"
+
+namespace mbk {
+
+struct SampleGrid {
+  uint32_t cols = 1, rows = 1;
+  uint32_t count() const { return cols * rows; }
+};
+
+SampleGrid sample_grid(uint32_t count);
+// Offset in [0, 1)^2 inside pixel (x, y) of sample `index` < grid.count().
+Vec2 sample_offset(uint32_t x, uint32_t y, uint32_t index, const SampleGrid& grid);
+
+}  // namespace mbk

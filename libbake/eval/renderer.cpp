@@ -1,0 +1,91 @@
+// The evaluator's pixel loop (see renderer.h).
+#include "libbake/eval/renderer.h"
+
+#include <cmath>
+#include <vector>
+
+#include "formats/error.h"
+#include "libbake/core/parallel.h"
+#include "libbake/eval/camera_rays.h"
+#include "libbake/eval/pixel_samples.h"
+#include "libbake/eval/surface_frame.h"
+#include "libbake/scene/bake_plan.h"
+
+namespace mbk {
+namespace {
+
+// What shading needs per shape, resolved once instead of per sample.
+struct ShapeShading {
+  Brdf brdf;
+  const MaterialNormals* normals;
+};
+
+Vec3 radiance_along(const Scene& scene, const std::vector<ShapeShading>& shading, const SceneLighting& lighting,
+                    const RayDifferential& r) {
+  const auto hit = intersect_scene(scene.shapes, r.ray);
+  if (!hit) return background(lighting, r.ray.direction);
+  const ShapeShading& s = shading[hit->shape];
+  const Vec3 to_viewer = -r.ray.direction;
+  const SurfaceFrame frame = surface_frame(*hit, to_viewer);
+  const Vec3 tangent_normal = s.normals->lookup(hit->uv, uv_footprint(*hit, r));
+  const ShadingPoint point{hit->p, frame.N, frame.to_world(tangent_normal).normalized(), to_viewer};
+  return shade(lighting, s.brdf, point);
+}
+
+}  // namespace
+
+RenderInputs load_render_inputs(const Scene& scene, const RenderSettings& settings) {
+  RenderInputs inputs;
+  inputs.lighting = load_scene_lighting(scene);
+  const auto folder = settings.asset_folder.empty() ? default_asset_folder(scene) : settings.asset_folder;
+  inputs.normals =
+      load_material_normals(scene, settings.reference > 0 ? NormalSource::reference : NormalSource::effects, folder);
+  return inputs;
+}
+
+Image render_scene(const Scene& scene, const RenderInputs& inputs, const RenderSettings& settings, Progress& progress) {
+  const PinholeCamera camera(scene.camera);
+  const SampleGrid grid =
+      settings.reference > 0 ? SampleGrid{settings.reference, settings.reference} : sample_grid(settings.spp);
+  if (grid.count() == 0) throw Error(ExitCode::bad_command_line, "samples per pixel must be at least 1");
+  std::vector<ShapeShading> shading;
+  for (const Shape& shape : scene.shapes) {
+    const auto it = inputs.normals.find(shape.material);
+    if (it == inputs.normals.end())
+      throw Error(ExitCode::runtime_failure, "internal: no normals loaded for material '" + shape.material + "'");
+    shading.push_back({Brdf::of(scene.materials.at(shape.material)), &it->second});
+  }
+  Image image;
+  image.width = camera.width();
+  image.height = camera.height();
+  image.channels = 3;
+  image.pixels.assign(size_t(image.width) * image.height * 3, 0.0f);
+  progress.start(settings.reference > 0 ? "reference" : "render", image.height);
+  parallel_for(0, image.height, [&](int64_t row) {
+    const uint32_t y = uint32_t(row);
+    for (uint32_t x = 0; x < image.width; ++x) {
+      Vec3 sum = Vec3::Zero();
+      for (uint32_t s = 0; s < grid.count(); ++s) {
+        const Vec2 o = sample_offset(x, y, s, grid);
+        sum += radiance_along(scene, shading, inputs.lighting, camera.ray(x + o.x(), y + o.y()));
+      }
+      const Vec3 pixel = sum / double(grid.count());
+      for (uint32_t c = 0; c < 3; ++c) image.at(x, y, c) = float(pixel[c]);
+    }
+    progress.advance();
+  });
+  progress.finish();
+  // A float image cannot hold radiance past ~3.4e38: refuse to write Inf/NaN pixels (e.g. from absurd light
+  // intensities) rather than hand a renderer or `compare` an image it cannot use.
+  uint64_t bad = 0;
+  size_t first = 0;
+  for (size_t i = 0; i < image.pixels.size(); ++i)
+    if (!std::isfinite(image.pixels[i]) && bad++ == 0) first = i / 3;
+  if (bad)
+    throw Error(ExitCode::runtime_failure,
+                "rendering produced " + std::to_string(bad) + " non-finite pixel values (overflow?), first at pixel (" +
+                    std::to_string(first % image.width) + ", " + std::to_string(first / image.width) + ")");
+  return image;
+}
+
+}  // namespace mbk

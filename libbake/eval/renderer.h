@@ -1,0 +1,46 @@
+// The reference shader evaluator's main loop: for every pixel, stratified sub-pixel rays (pixel_samples.h)
+// from the pinhole camera with their ray differentials (camera_rays.h) are cast at the shapes
+// (shape_intersection.h); at each hit the material's normal is looked up for the pixel's uv footprint
+// (uv_footprint.h, material_normals.h), turned into world space by the tangent frame (surface_frame.h) and
+// shaded by the scene's lights (scene_lighting.h); the pixel is the mean of its samples (a box filter).
+//
+// Two modes share every line of this loop and differ only in where normals come from and how many rays a
+// pixel gets:
+//   render      `spp` rays per pixel; each material's effects (or the baseline) filter its normals for the
+//               whole pixel's footprint: a sample's footprint is the pixel's, not spp times smaller, as a
+//               rasteriser's derivatives are;
+//   reference   N x N rays per pixel, normals unfiltered (bilinear in the raw map's level 0): the brute-force
+//               ground truth every technique is compared with. No assets are read.
+// Pixels are written independently (parallel_for over rows), so the image does not depend on --threads.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "libbake/core/progress.h"
+#include "libbake/eval/material_normals.h"
+#include "libbake/eval/scene_lighting.h"
+#include "libbake/image/image_io.h"
+#include "libbake/scene/scene.h"
+
+namespace mbk {
+
+struct RenderSettings {
+  uint32_t spp = 1;                    // samples per pixel (render mode)
+  uint32_t reference = 0;              // > 0: reference mode with reference x reference samples per pixel
+  std::filesystem::path asset_folder;  // where effects' assets are; empty: default_asset_folder(scene)
+};
+
+// What a render reads from disk: projected distant lighting and each material's normals.
+struct RenderInputs {
+  SceneLighting lighting;
+  std::map<std::string, MaterialNormals> normals;
+};
+
+RenderInputs load_render_inputs(const Scene& scene, const RenderSettings& settings);
+
+// Linear RGB, 3 channels, camera width x height. Reports one progress unit per row.
+Image render_scene(const Scene& scene, const RenderInputs& inputs, const RenderSettings& settings, Progress& progress);
+
+}  // namespace mbk

@@ -1,0 +1,47 @@
+// How the scene's lights shade a surface point: point and directional lights through the full BRDF
+// (microfacet_brdf.h), and all distant lighting (environment maps times their scale, plus uniform skies)
+// summed into one set of order-2 SH coefficients (sh_lighting.h: exact diffuse convolution, vMF specular
+// approximation).
+//
+// No shadows: nothing occludes a light but the surface's own horizon; a point or directional light
+// contributes only where it is above the geometric surface (n_g . l > 0) and above the shading normal
+// (n . l > 0). A shading normal that faces away from the viewer (n . v < 0.01, common with normal maps at
+// grazing angles) is bent towards the viewer first, n <- normalize(n + (0.01 - n . v) v), so that
+// n . v > 0: otherwise such points would reflect nothing and sprinkle black texels over the image (the
+// reference, whose unfiltered normals do this most, gets the same treatment). Rays that miss every shape
+// see the SH radiance of the distant lighting (black without it).
+#pragma once
+
+#include <vector>
+
+#include "libbake/eval/microfacet_brdf.h"
+#include "libbake/eval/sh_lighting.h"
+#include "libbake/scene/scene.h"
+
+namespace mbk {
+
+struct SceneLighting {
+  std::vector<PointLight> points;
+  std::vector<DirectionalLight> directionals;
+  bool has_distant = false;  // any environment or sky
+  ShCoefficients distant{};
+};
+
+// Loads and projects the environment maps (Error from image_io when one cannot be read).
+SceneLighting load_scene_lighting(const Scene& scene);
+
+struct ShadingPoint {
+  Vec3 position;
+  Vec3 geometric_normal;  // unit, turned towards the viewer
+  Vec3 normal;            // unit shading normal
+  Vec3 to_viewer;         // unit
+};
+
+// The shading normal actually used: `normal`, bent towards the viewer when n . v < 0.01 (see above).
+Vec3 facing_viewer(const Vec3& normal, const Vec3& to_viewer);
+// Radiance towards the viewer, linear RGB.
+Vec3 shade(const SceneLighting& lighting, const Brdf& brdf, const ShadingPoint& point);
+// What a ray that hits nothing sees.
+Vec3 background(const SceneLighting& lighting, const Vec3& direction);
+
+}  // namespace mbk

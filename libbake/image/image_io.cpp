@@ -1,0 +1,150 @@
+// Image reading and writing through OpenImageIO (see image_io.h): the only file that talks to OIIO.
+#include "libbake/image/image_io.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+
+#include "formats/error.h"
+
+namespace mbk {
+namespace {
+
+// OpenImageIO's messages may span lines; errors are one line (DESIGN.md).
+std::string one_line(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text.empty() ? "unknown error" : text;
+}
+
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+// Missing files, folders and unreadable files are I/O failures (exit 2), distinct from files that exist
+// but are not images (exit 3).
+void require_readable_file(const std::filesystem::path& path) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (!std::filesystem::exists(status)) throw Error(ExitCode::io_failure, "file not found", path.string());
+  if (std::filesystem::is_directory(status))
+    throw Error(ExitCode::io_failure, "is a folder, not an image file", path.string());
+  std::ifstream probe(path, std::ios::binary);
+  if (!probe) throw Error(ExitCode::io_failure, "cannot open file for reading", path.string());
+}
+
+bool is_float_type(OIIO::TypeDesc t) {
+  return t.basetype == OIIO::TypeDesc::HALF || t.basetype == OIIO::TypeDesc::FLOAT ||
+         t.basetype == OIIO::TypeDesc::DOUBLE;
+}
+
+// Opens an image and checks that it is a flat 2-D image microbake can hold.
+std::unique_ptr<OIIO::ImageInput> open_image(const std::filesystem::path& path, ImageHeader& header) {
+  require_readable_file(path);
+  OIIO::ImageSpec config;
+  // Without this, OpenImageIO multiplies colour by alpha for PNG/TGA/TIFF: a normal map whose alpha holds
+  // a height map would come back scaled (test: NormalMapDecode.AlphaDoesNotScaleNormals).
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto in = OIIO::ImageInput::open(path.string(), &config);
+  if (!in) throw Error(ExitCode::invalid_input, "not a readable image: " + one_line(OIIO::geterror()), path.string());
+  const OIIO::ImageSpec& spec = in->spec();
+  if (spec.deep) throw Error(ExitCode::invalid_input, "deep images are not supported", path.string());
+  if (spec.depth > 1) throw Error(ExitCode::invalid_input, "volume images are not supported", path.string());
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+    throw Error(ExitCode::invalid_input, "image has no pixels", path.string());
+  header.width = uint32_t(spec.width);
+  header.height = uint32_t(spec.height);
+  header.info.pixel_format = spec.format.c_str();
+  header.info.is_float = is_float_type(spec.format);
+  header.info.is_signed = !header.info.is_float && spec.format.is_signed();
+  header.info.integer_bits = header.info.is_float ? 0 : int(8 * spec.format.basesize());
+  header.info.file_channels = uint32_t(spec.nchannels);
+  return in;
+}
+
+// Rounds [0, 1] to the nearest of `max_code` + 1 codes; clamps out-of-range values, NaN becomes 0.
+template <typename T>
+std::vector<T> quantize(const std::vector<float>& pixels, double max_code) {
+  std::vector<T> codes(pixels.size());
+  for (size_t i = 0; i < pixels.size(); ++i) {
+    const double v = pixels[i];
+    codes[i] = std::isnan(v) ? T(0) : T(std::floor(std::clamp(v, 0.0, 1.0) * max_code + 0.5));
+  }
+  return codes;
+}
+
+}  // namespace
+
+ImageHeader read_image_header(const std::filesystem::path& path) {
+  ImageHeader header;
+  open_image(path, header);
+  return header;
+}
+
+Image load_image(const std::filesystem::path& path, ImageFileInfo* info) {
+  ImageHeader header;
+  auto in = open_image(path, header);
+  Image image;
+  image.width = header.width;
+  image.height = header.height;
+  image.channels = header.info.file_channels;
+  image.pixels.resize(size_t(image.width) * image.height * image.channels);
+  if (!in->read_image(0, 0, 0, int(image.channels), OIIO::TypeDesc::FLOAT, image.pixels.data()))
+    throw Error(ExitCode::invalid_input, "cannot decode image: " + one_line(in->geterror()), path.string());
+  in->close();
+  if (info) *info = header.info;
+  return image;
+}
+
+void save_image(const std::filesystem::path& path, const Image& image, const ImageSaveOptions& options,
+                const std::filesystem::path& format_path) {
+  const std::filesystem::path& named = format_path.empty() ? path : format_path;
+  if (image.width == 0 || image.height == 0 || image.channels == 0 ||
+      image.pixels.size() != size_t(image.width) * image.height * image.channels)
+    throw Error(ExitCode::runtime_failure, "internal: image buffer does not match its size", path.string());
+  if (options.png_bits != 8 && options.png_bits != 16)
+    throw Error(ExitCode::runtime_failure, "internal: png_bits must be 8 or 16", path.string());
+  if (options.float_bits != 16 && options.float_bits != 32)
+    throw Error(ExitCode::runtime_failure, "internal: float_bits must be 16 or 32", path.string());
+
+  auto out = OIIO::ImageOutput::create(named.string());
+  if (!out) {
+    OIIO::geterror();  // clear OpenImageIO's pending message; ours names the extension
+    const std::string ext = named.extension().string();
+    throw Error(ExitCode::bad_command_line,
+                ext.empty() ? "output has no file extension to choose an image format from"
+                            : "no image format for the extension '" + ext + "' (use .png or .exr)",
+                named.string());
+  }
+  const bool exr = lower_extension(named) == ".exr";
+  OIIO::TypeDesc stored = exr ? (options.float_bits == 16 ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT)
+                              : (options.png_bits == 16 ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
+  OIIO::ImageSpec spec(int(image.width), int(image.height), int(image.channels), stored);
+  if (exr) spec.attribute("compression", "zip");  // stated, so files do not change with OIIO's default
+  // Channels are stored as given: without this, OpenImageIO divides colour by alpha when writing PNG, TGA
+  // and TIFF (test: NormalMapDecode.AlphaDoesNotScaleNormals).
+  spec.attribute("oiio:UnassociatedAlpha", 1);
+  // OpenImageIO stamps the current time into EXR (capDate) and TIFF files unless DateTime is given; an empty
+  // one keeps outputs byte-identical between runs (test: ImageIo.SameImageGivesByteIdenticalFiles).
+  spec.attribute("DateTime", "");
+  if (!out->open(path.string(), spec))
+    throw Error(ExitCode::io_failure, "cannot write image: " + one_line(out->geterror()), path.string());
+  bool ok;
+  if (exr) {
+    ok = out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
+  } else if (options.png_bits == 16) {
+    const auto codes = quantize<uint16_t>(image.pixels, 65535.0);
+    ok = out->write_image(OIIO::TypeDesc::UINT16, codes.data());
+  } else {
+    const auto codes = quantize<uint8_t>(image.pixels, 255.0);
+    ok = out->write_image(OIIO::TypeDesc::UINT8, codes.data());
+  }
+  ok = out->close() && ok;
+  if (!ok) throw Error(ExitCode::io_failure, "cannot write image: " + one_line(out->geterror()), path.string());
+}
+
+}  // namespace mbk

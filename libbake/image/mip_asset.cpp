@@ -1,0 +1,52 @@
+// Bakes the `mip` asset kind from a loaded normal map (see mip_asset.h).
+#include "libbake/image/mip_asset.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mbk {
+namespace {
+
+// Per level: mean, minimum and maximum length of the stored mean normals.
+nlohmann::json mip_statistics(const NormalPyramid& pyramid) {
+  nlohmann::json mean = nlohmann::json::array(), min = nlohmann::json::array(), max = nlohmann::json::array();
+  for (const NormalMap& level : pyramid.levels) {
+    double sum = 0.0, lo = INFINITY, hi = 0.0;
+    for (const Vec3f& n : level.texels) {
+      const double len = n.cast<double>().norm();
+      sum += len;
+      lo = std::min(lo, len);
+      hi = std::max(hi, len);
+    }
+    mean.push_back(sum / double(level.texels.size()));
+    min.push_back(lo);
+    max.push_back(hi);
+  }
+  return {{"mean_length", mean}, {"min_length", min}, {"max_length", max}};
+}
+
+}  // namespace
+
+AssetWriter bake_mip_asset(const LoadedNormalMap& input) {
+  const NormalPyramid pyramid = build_normal_pyramid(input.map);
+  if (pyramid.levels.empty()) throw Error(ExitCode::runtime_failure, "internal: empty normal map", input.record.path);
+  nlohmann::json metadata;
+  metadata["inputs"] = nlohmann::json::array({input.record.to_json()});
+  metadata["parameters"] = {
+      {"width", input.map.width}, {"height", input.map.height}, {"levels", uint32_t(pyramid.levels.size())}};
+  metadata["conventions"] = normal_map_conventions();
+  metadata["conventions"]["levels"] =
+      "level k is ceil(W / 2^k) x ceil(H / 2^k); each texel the unnormalised mean of the finest normals it covers";
+  metadata["statistics"] = mip_statistics(pyramid);
+  AssetWriter writer("mip", std::move(metadata));
+  for (size_t k = 0; k < pyramid.levels.size(); ++k) {
+    const NormalMap& level = pyramid.levels[k];
+    // Vec3f is three packed floats (no padding), so the texel array is the [h, w, 3] section as it is.
+    static_assert(sizeof(Vec3f) == 3 * sizeof(float));
+    writer.add("level_" + std::to_string(k), {level.height, level.width, 3},
+               std::span<const float>(level.texels.front().data(), level.texels.size() * 3));
+  }
+  return writer;
+}
+
+}  // namespace mbk

@@ -1,0 +1,56 @@
+// Up-to-date checks of baked assets against the current inputs (see asset_freshness.h).
+#include "libbake/scene/asset_freshness.h"
+
+#include "formats/asset.h"
+#include "formats/error.h"
+
+namespace mbk {
+namespace {
+
+AssetFreshness stale(std::string why) { return {AssetState::stale, std::move(why)}; }
+
+std::string text_of(const nlohmann::json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
+
+}  // namespace
+
+AssetFreshness check_asset_freshness(const PlannedAsset& planned, const std::filesystem::path& file,
+                                     const std::string& input_hash) {
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) return {AssetState::missing, "no file yet"};
+  std::optional<Asset> asset;
+  try {
+    asset.emplace(Asset::open(file));
+  } catch (const Error& e) {
+    return stale("existing file is not a valid asset: " + std::string(e.what()));
+  }
+  const AssetRecipe& recipe = *planned.recipe;
+  if (asset->kind().name != recipe.kind)
+    return stale("existing file is a '" + std::string(asset->kind().name) + "' asset, not '" + recipe.kind + "'");
+
+  const nlohmann::json& inputs = asset->metadata()["inputs"];
+  if (!inputs.is_array() || inputs.size() != 1 || !inputs[0].is_object())
+    return stale("existing file does not record exactly one input");
+  const nlohmann::json& in = inputs[0];
+  const nlohmann::json recorded_hash = in.value("content_hash", nlohmann::json());
+  if (recorded_hash != input_hash)
+    return stale("input changed (recorded " + text_of(recorded_hash) + ", now " + input_hash + ")");
+  const std::string convention = convention_name(planned.input.convention);
+  if (in.value("convention", nlohmann::json()) != convention)
+    return stale("normal-map convention changed (recorded " + text_of(in.value("convention", nlohmann::json())) +
+                 ", now " + convention + ")");
+  const std::string policy = planned.input.repair ? "repair" : "error";
+  if (in.value("invalid_policy", nlohmann::json()) != policy)
+    return stale("invalid-texel policy changed (recorded " + text_of(in.value("invalid_policy", nlohmann::json())) +
+                 ", now " + policy + ")");
+
+  const nlohmann::json& params = asset->metadata()["parameters"];
+  for (auto it = recipe.parameters.begin(); it != recipe.parameters.end(); ++it) {
+    const nlohmann::json recorded = params.is_object() ? params.value(it.key(), nlohmann::json()) : nlohmann::json();
+    if (recorded != it.value())
+      return stale("parameter '" + it.key() + "' changed (recorded " + recorded.dump() + ", now " + it.value().dump() +
+                   ")");
+  }
+  return {AssetState::up_to_date, "up to date (input " + input_hash + ", same parameters)"};
+}
+
+}  // namespace mbk

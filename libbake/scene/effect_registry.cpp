@@ -1,0 +1,29 @@
+// The effects materials may name, and the assets each needs (see effect_registry.h).
+#include "libbake/scene/effect_registry.h"
+
+#include "libbake/image/mip_asset.h"
+
+namespace mbk {
+
+std::span<const EffectInfo> effect_registry() {
+  static const std::vector<EffectInfo> effects = {
+      {"mip",
+       "shade from the baked MIP pyramid of the normal map (the baseline, shipped as an asset)",
+       {{"mip", nlohmann::json::object(), [](const LoadedNormalMap& map) { return bake_mip_asset(map); }}}},
+  };
+  return effects;
+}
+
+const EffectInfo* find_effect(std::string_view name) {
+  for (const auto& e : effect_registry())
+    if (e.name == name) return &e;
+  return nullptr;
+}
+
+std::string known_effect_names() {
+  std::string names;
+  for (const auto& e : effect_registry()) names += (names.empty() ? "" : ", ") + e.name;
+  return names;
+}
+
+}  // namespace mbk

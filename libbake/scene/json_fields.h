@@ -1,0 +1,60 @@
+// Strict reading of JSON objects (scene files, later graph files): every key of an object must be read,
+// and a key nobody read is an error naming its JSON path ("materials.brick.rougness"), so a typo is never
+// silently ignored (DESIGN.md, "Unknown options and unknown JSON keys are errors"). Wrong types and values
+// out of range are errors naming their path too. Errors are Error(invalid_input, what, json_path); callers
+// that know the file prefix the path with it.
+#pragma once
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "libbake/core/eigen.h"
+
+namespace mbk {
+
+// "a.b" + "c" -> "a.b.c"; "" + "c" -> "c".
+std::string json_child_path(const std::string& parent, const std::string& key);
+// "shapes" + 2 -> "shapes[2]".
+std::string json_index_path(const std::string& parent, size_t index);
+
+class JsonObjectReader {
+ public:
+  // Error when `value` is not an object.
+  JsonObjectReader(const nlohmann::json& value, std::string path);
+
+  const std::string& path() const { return path_; }
+  std::string child(const std::string& key) const { return json_child_path(path_, key); }
+  // Marks the key as read and returns its value, or nullptr when absent.
+  const nlohmann::json* optional(const std::string& key);
+  // Marks the key as read and returns its value; Error "missing key" when absent.
+  const nlohmann::json& required(const std::string& key);
+  // Error naming the first key (in the object's sorted order) that no one read, listing the keys read.
+  void reject_unknown_keys() const;
+
+ private:
+  const nlohmann::json& object_;
+  std::string path_;
+  std::set<std::string> read_;
+};
+
+// Typed values; `path` names the value in errors. Numbers must be finite and inside [lo, hi].
+double json_number(const nlohmann::json& v, const std::string& path, double lo, double hi);
+// Positive integer in [lo, hi].
+uint32_t json_uint(const nlohmann::json& v, const std::string& path, uint32_t lo, uint32_t hi);
+bool json_bool(const nlohmann::json& v, const std::string& path);
+std::string json_string(const nlohmann::json& v, const std::string& path);
+// One of `choices`; the error lists them.
+std::string json_choice(const nlohmann::json& v, const std::string& path, const std::vector<std::string>& choices);
+// [x, y, z] of finite numbers.
+Vec3 json_vec3(const nlohmann::json& v, const std::string& path);
+// [x, y] of numbers inside [lo, hi].
+Vec2 json_vec2(const nlohmann::json& v, const std::string& path, double lo, double hi);
+// A linear RGB colour: a number (grey) or [r, g, b], each inside [lo, hi].
+Vec3 json_rgb(const nlohmann::json& v, const std::string& path, double lo, double hi);
+// A non-zero direction, returned normalised.
+Vec3 json_direction(const nlohmann::json& v, const std::string& path);
+
+}  // namespace mbk

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages microbake needs to build and test, only when some are missing
+# (quiet and fast when everything is there). Extra package names may be passed as arguments.
+set -euo pipefail
+
+packages=(cmake ninja-build g++ pkg-config ccache
+          libopenimageio-dev libopenexr-dev libeigen3-dev libcli11-dev nlohmann-json3-dev
+          libflann-dev liblz4-dev libgtest-dev libxxhash-dev "$@")
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install-deps: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+  sudo="sudo"
+fi
+echo "install-deps: installing ${missing[*]}" >&2
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

@@ -1,0 +1,148 @@
+// CLI tests as data (tests/cli/cases.json): each case is a command line, the expected exit code, and what
+// stdout/stderr must hold — text fragments, a regular expression, or a golden JSON file (tests/cli/golden/,
+// rewritten when MICROBAKE_UPDATE_GOLDEN=1). Every failing case must print exactly one line
+// `microbake: error: ...` on stderr, and the files a case lists under "absent" must not exist afterwards
+// (no partial outputs). Placeholders: {exe} the built microbake, {tmp} this run's scratch folder, {src} the
+// source tree. "skip_under_sanitizer": true skips a case in sanitized builds. The "setup" commands at the
+// top of the file run once, before the cases.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const fs::path kCasesFile = fs::path(MICROBAKE_SOURCE_DIR) / "tests" / "cli" / "cases.json";
+
+fs::path scratch_dir() {
+  static const fs::path dir = [] {
+    fs::path d = fs::temp_directory_path() / ("microbake_cli_" + std::to_string(::getpid()));
+    fs::remove_all(d);
+    fs::create_directories(d);
+    return d;
+  }();
+  return dir;
+}
+
+std::string expand(std::string s) {
+  const std::pair<std::string, std::string> subs[] = {
+      {"{exe}", MICROBAKE_EXE}, {"{tmp}", scratch_dir().string()}, {"{src}", MICROBAKE_SOURCE_DIR}};
+  for (const auto& [key, value] : subs)
+    for (size_t pos; (pos = s.find(key)) != std::string::npos;) s.replace(pos, key.size(), value);
+  return s;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+struct ShellRun {
+  int exit_code;
+  std::string out, err;
+};
+
+ShellRun run_shell(const std::string& command) {
+  const fs::path out = scratch_dir() / ".stdout", err = scratch_dir() / ".stderr";
+  const std::string full = "cd '" + scratch_dir().string() + "' && ( " + command + " ) </dev/null >'" + out.string() +
+                           "' 2>'" + err.string() + "'";
+  int status = std::system(full.c_str());
+  ShellRun r{WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), slurp(out), slurp(err)};
+  return r;
+}
+
+json load_cases_file() { return json::parse(slurp(kCasesFile)); }
+
+struct CliCase {
+  std::string name;
+  json spec;
+};
+
+std::vector<CliCase> load_cases() {
+  std::vector<CliCase> cases;
+  const json file = load_cases_file();
+  for (const json& c : file.at("cases")) cases.push_back({c.at("name").get<std::string>(), c});
+  return cases;
+}
+
+class CliEnvironment : public ::testing::Environment {
+ public:
+  void SetUp() override {
+    const json file = load_cases_file();
+    for (const json& cmd : file.at("setup")) {
+      ShellRun r = run_shell(expand(cmd.get<std::string>()));
+      ASSERT_EQ(r.exit_code, 0) << "setup failed: " << cmd << "\n" << r.err;
+    }
+  }
+  void TearDown() override { fs::remove_all(scratch_dir()); }
+};
+const auto* const kEnvironment = ::testing::AddGlobalTestEnvironment(new CliEnvironment);
+
+// Replaces this run's scratch path so that goldens do not depend on it.
+std::string normalise(std::string s) {
+  const std::string tmp = scratch_dir().string();
+  for (size_t pos; (pos = s.find(tmp)) != std::string::npos;) s.replace(pos, tmp.size(), "{tmp}");
+  return s;
+}
+
+class CliCaseTest : public ::testing::TestWithParam<CliCase> {};
+
+TEST_P(CliCaseTest, Behaves) {
+  const json& c = GetParam().spec;
+#ifdef MICROBAKE_SANITIZED
+  // AddressSanitizer reserves terabytes of address space, so cases that limit memory cannot run under it.
+  if (c.value("skip_under_sanitizer", false)) GTEST_SKIP() << "not meaningful under sanitizers";
+#endif
+  const std::string command = expand(c.at("command").get<std::string>());
+  ShellRun r = run_shell(command);
+  const int expected = c.at("exit").get<int>();
+  EXPECT_EQ(r.exit_code, expected) << command << "\nstdout: " << r.out << "\nstderr: " << r.err;
+  if (expected != 0 && c.value("one_line_error", true)) {
+    static const std::regex one_line(R"(^microbake: error: [^\n]+\n$)");
+    EXPECT_TRUE(std::regex_match(r.err, one_line)) << "stderr must be one error line, got: " << r.err;
+  }
+  for (const auto& frag : c.value("stdout_contains", json::array()))
+    EXPECT_NE(r.out.find(expand(frag.get<std::string>())), std::string::npos) << "stdout lacks " << frag << ":\n"
+                                                                              << r.out;
+  for (const auto& frag : c.value("stderr_contains", json::array()))
+    EXPECT_NE(r.err.find(expand(frag.get<std::string>())), std::string::npos) << "stderr lacks " << frag << ":\n"
+                                                                              << r.err;
+  if (c.contains("stderr_regex")) {
+    EXPECT_TRUE(std::regex_search(r.err, std::regex(c["stderr_regex"].get<std::string>()))) << r.err;
+  }
+  if (c.contains("stdout_golden")) {
+    const fs::path golden =
+        fs::path(MICROBAKE_SOURCE_DIR) / "tests" / "cli" / "golden" / c["stdout_golden"].get<std::string>();
+    json actual = json::parse(normalise(r.out), nullptr, false);
+    ASSERT_FALSE(actual.is_discarded()) << "stdout is not JSON: " << r.out;
+    if (const char* update = std::getenv("MICROBAKE_UPDATE_GOLDEN"); update && std::string(update) == "1") {
+      std::ofstream(golden) << actual.dump(2) << "\n";
+    } else {
+      ASSERT_TRUE(fs::exists(golden)) << golden << " missing: run with MICROBAKE_UPDATE_GOLDEN=1 once and review it";
+      EXPECT_EQ(actual, json::parse(slurp(golden)))
+          << "differs from " << golden << " (MICROBAKE_UPDATE_GOLDEN=1 rewrites it)";
+    }
+  }
+  for (const auto& path : c.value("absent", json::array())) {
+    const fs::path p = expand(path.get<std::string>());
+    EXPECT_FALSE(fs::exists(p)) << p << " should not exist";
+    for (const auto& e : fs::directory_iterator(p.parent_path()))
+      EXPECT_EQ(e.path().filename().string().find(".partial-"), std::string::npos) << "left behind: " << e.path();
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, CliCaseTest, ::testing::ValuesIn(load_cases()),
+                         [](const auto& info) { return info.param.name; });
+
+}  // namespace

@@ -1,0 +1,112 @@
+// Test fixtures for the container: a small valid `mip` asset built by hand (its levels computed by brute
+// force over covered texels, independently of the baker), and readable helpers that corrupt one field of a
+// valid file and, where a test wants a deeper check to fire, reseal the checksums around it.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "formats/asset_writer.h"
+#include "formats/byte_io.h"
+#include "formats/container_layout.h"
+#include "formats/mip_levels.h"
+
+namespace mbk::test {
+
+// A W x H normal field with varied directions, as level 0 of a mip asset.
+inline std::vector<float> unit_normals(uint32_t w, uint32_t h) {
+  std::vector<float> n(size_t(w) * h * 3);
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x) {
+      double a = 0.3 * std::sin(1.7 * x + 0.4 * y), b = 0.25 * std::cos(0.9 * y - 1.3 * x);
+      double len = std::sqrt(a * a + b * b + 1.0);
+      float* p = &n[(size_t(y) * w + x) * 3];
+      p[0] = float(a / len), p[1] = float(b / len), p[2] = float(1.0 / len);
+      float l = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+      for (int c = 0; c < 3; ++c) p[c] /= l;
+    }
+  return n;
+}
+
+// Level k texel = mean of the finest texels it covers, by brute force.
+inline std::vector<std::vector<float>> brute_force_pyramid(const std::vector<float>& level0, uint32_t w, uint32_t h) {
+  std::vector<std::vector<float>> levels;
+  auto sizes = mip_level_sizes(w, h);
+  for (size_t k = 0; k < sizes.size(); ++k) {
+    std::vector<float> L(size_t(sizes[k].width) * sizes[k].height * 3);
+    for (uint32_t j = 0; j < sizes[k].height; ++j)
+      for (uint32_t i = 0; i < sizes[k].width; ++i) {
+        double s[3] = {0, 0, 0};
+        int count = 0;
+        for (uint32_t y = j << k; y < std::min<uint32_t>((j + 1) << k, h); ++y)
+          for (uint32_t x = i << k; x < std::min<uint32_t>((i + 1) << k, w); ++x, ++count)
+            for (int c = 0; c < 3; ++c) s[c] += level0[(size_t(y) * w + x) * 3 + c];
+        for (int c = 0; c < 3; ++c) L[(size_t(j) * sizes[k].width + i) * 3 + c] = float(s[c] / count);
+      }
+    levels.push_back(std::move(L));
+  }
+  return levels;
+}
+
+inline nlohmann::json mip_metadata(uint32_t w, uint32_t h, size_t levels) {
+  return {{"inputs", nlohmann::json::array()},
+          {"parameters", {{"width", w}, {"height", h}, {"levels", levels}}},
+          {"conventions", {{"normal_convention", "+Y"}}},
+          {"statistics", nlohmann::json::object()}};
+}
+
+inline AssetWriter mip_writer(uint32_t w, uint32_t h) {
+  auto levels = brute_force_pyramid(unit_normals(w, h), w, h);
+  auto sizes = mip_level_sizes(w, h);
+  AssetWriter writer("mip", mip_metadata(w, h, levels.size()));
+  for (size_t k = 0; k < levels.size(); ++k)
+    writer.add<float>("level_" + std::to_string(k), {sizes[k].height, sizes[k].width, 3}, levels[k]);
+  return writer;
+}
+
+inline std::vector<uint8_t> valid_mip_bytes(uint32_t w = 5, uint32_t h = 3) { return mip_writer(w, h).serialize(); }
+
+// --- corruption helpers -------------------------------------------------------------------------------
+inline uint64_t section_table_offset(const std::vector<uint8_t>& f) { return load_le<uint64_t>(&f[40]); }
+inline uint64_t entry_offset(const std::vector<uint8_t>& f, size_t i) {
+  return section_table_offset(f) + i * kSectionEntrySize;
+}
+inline uint64_t section_data_offset(const std::vector<uint8_t>& f, size_t i) {
+  return load_le<uint64_t>(&f[entry_offset(f, i) + 88]);
+}
+
+// Recomputes the header checksum, so that checks after it see the change.
+inline void reseal_header(std::vector<uint8_t>& f) {
+  uint64_t meta_off = load_le<uint64_t>(&f[24]), meta_size = load_le<uint64_t>(&f[32]);
+  uint64_t table_off = load_le<uint64_t>(&f[40]);
+  uint64_t table_size = uint64_t(load_le<uint32_t>(&f[48])) * load_le<uint32_t>(&f[52]);
+  std::vector<uint8_t> covered(f.begin(), f.begin() + kChecksummedHeaderBytes);
+  covered.insert(covered.end(), f.begin() + meta_off, f.begin() + meta_off + meta_size);
+  covered.insert(covered.end(), f.begin() + table_off, f.begin() + table_off + table_size);
+  store_le<uint64_t>(&f[56], checksum_of(covered.data(), covered.size()));
+}
+
+// Recomputes section i's checksum after its data changed, then the header's.
+inline void reseal_section(std::vector<uint8_t>& f, size_t i) {
+  uint64_t e = entry_offset(f, i);
+  uint64_t off = load_le<uint64_t>(&f[e + 88]), len = load_le<uint64_t>(&f[e + 96]);
+  store_le<uint64_t>(&f[e + 104], checksum_of(&f[off], len));
+  reseal_header(f);
+}
+
+// Replaces the metadata JSON (same length required by the layout: pads with spaces), resealing.
+inline void replace_metadata(std::vector<uint8_t>& f, const std::string& json) {
+  uint64_t meta_off = load_le<uint64_t>(&f[24]), meta_size = load_le<uint64_t>(&f[32]);
+  std::string text = json;
+  if (text.size() > meta_size) throw std::runtime_error("replacement metadata too long");
+  text.resize(meta_size, ' ');
+  std::memcpy(&f[meta_off], text.data(), text.size());
+  reseal_header(f);
+}
+
+inline float get_f32(const std::vector<uint8_t>& f, uint64_t off) { return load_le<float>(&f[off]); }
+inline void set_f32(std::vector<uint8_t>& f, uint64_t off, float v) { store_le<float>(&f[off], v); }
+
+}  // namespace mbk::test

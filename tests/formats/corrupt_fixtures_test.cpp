@@ -1,0 +1,373 @@
+// One corrupt fixture per validation finding: each is made from a valid file by one readable change, and
+// validate_asset() must report exactly that finding's id (and no other error), while Asset::parse refuses
+// it with the documented exit code. Together with ValidationMessages.EveryIdHasAFixture this keeps the
+// table of findings and the checks in step.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <set>
+
+#include "formats/asset.h"
+#include "formats/validate.h"
+#include "tests/formats/asset_fixtures.h"
+
+namespace mbk {
+namespace {
+
+using Bytes = std::vector<uint8_t>;
+using test::entry_offset;
+using test::reseal_header;
+using test::reseal_section;
+using test::section_data_offset;
+
+struct CorruptCase {
+  const char* name;
+  int expected_id;
+  std::function<Bytes()> make;
+};
+
+// First byte in a gap between regions of a valid file (the fixture always has one: 5x3 level data is not a
+// multiple of 64 bytes).
+uint64_t first_padding_byte(const Bytes& f) {
+  uint64_t end0 = section_data_offset(f, 0) + load_le<uint64_t>(&f[entry_offset(f, 0) + 96]);
+  return end0;  // level_0 is 180 bytes, the next section starts at the next multiple of 64
+}
+
+Bytes without_last_level() {
+  auto sizes = mip_level_sizes(5, 3);
+  auto levels = test::brute_force_pyramid(test::unit_normals(5, 3), 5, 3);
+  AssetWriter w("mip", test::mip_metadata(5, 3, levels.size()));
+  for (size_t k = 0; k + 1 < levels.size(); ++k)
+    w.add<float>("level_" + std::to_string(k), {sizes[k].height, sizes[k].width, 3}, levels[k]);
+  return w.serialize();
+}
+
+Bytes with_level_texel(size_t level, size_t texel, std::function<void(float*)> change) {
+  Bytes f = test::valid_mip_bytes();
+  uint64_t off = section_data_offset(f, level) + texel * 12;
+  float v[3];
+  std::memcpy(v, &f[off], 12);
+  change(v);
+  std::memcpy(&f[off], v, 12);
+  reseal_section(f, level);
+  return f;
+}
+
+std::vector<CorruptCase> corrupt_cases() {
+  auto valid = [] { return test::valid_mip_bytes(); };
+  auto meta_text = [](const Bytes& f) {
+    return nlohmann::json::parse(std::string(f.begin() + load_le<uint64_t>(&f[24]),
+                                             f.begin() + load_le<uint64_t>(&f[24]) + load_le<uint64_t>(&f[32])));
+  };
+  return {
+      {"TooSmall", 1001,
+       [&] {
+         Bytes f = valid();
+         f.resize(20);
+         return f;
+       }},
+      {"BadMagic", 1002,
+       [&] {
+         Bytes f = valid();
+         f[1] = 'X';
+         return f;
+       }},
+      {"TextModeCrLfToLf", 1003,
+       [&] {
+         Bytes f = valid();
+         f.erase(f.begin() + 4);
+         return f;
+       }},
+      {"Extended", 1004,
+       [&] {
+         Bytes f = valid();
+         f.push_back(0);
+         return f;
+       }},
+      {"PaddingNotZero", 1005,
+       [&] {
+         Bytes f = valid();
+         f[first_padding_byte(f)] = 1;
+         return f;
+       }},
+      {"NewerMajor", 2001,
+       [&] {
+         Bytes f = valid();
+         store_le<uint16_t>(&f[8], 2);
+         return f;
+       }},
+      {"MajorZero", 2002,
+       [&] {
+         Bytes f = valid();
+         store_le<uint16_t>(&f[8], 0);
+         return f;
+       }},
+      {"NewerMinor", 2003,
+       [&] {
+         Bytes f = valid();
+         store_le<uint16_t>(&f[10], 7);
+         reseal_header(f);
+         return f;
+       }},
+      {"HeaderChecksum", 2004,
+       [&] {
+         Bytes f = valid();
+         f[load_le<uint64_t>(&f[24]) + 3] ^= 0x20;
+         return f;
+       }},
+      {"MetadataOutOfBounds", 2005,
+       [&] {
+         Bytes f = valid();
+         store_le<uint64_t>(&f[32], f.size());
+         return f;
+       }},
+      {"TableOutOfBounds", 2006,
+       [&] {
+         Bytes f = valid();
+         store_le<uint32_t>(&f[48], 60000);
+         return f;
+       }},
+      {"EntryTooSmall", 2007,
+       [&] {
+         Bytes f = valid();
+         store_le<uint32_t>(&f[52], 64);
+         return f;
+       }},
+      {"TooManySections", 2008,
+       [&] {
+         Bytes f = valid();
+         store_le<uint32_t>(&f[48], 70000);
+         return f;
+       }},
+      {"MetadataNotObject", 2009,
+       [&] {
+         Bytes f = valid();
+         test::replace_metadata(f, "[1, 2]");
+         return f;
+       }},
+      {"MetadataMissingKey", 2010,
+       [&] {
+         Bytes f = valid();
+         auto m = meta_text(f);
+         m.erase("statistics");
+         test::replace_metadata(f, m.dump());
+         return f;
+       }},
+      {"UnknownKind", 2011,
+       [&] {
+         Bytes f = valid();
+         store_le<uint32_t>(&f[12], 999);
+         reseal_header(f);
+         return f;
+       }},
+      {"KindMismatch", 2012,
+       [&] {
+         Bytes f = valid();
+         auto m = meta_text(f);
+         m["kind"] = "pim";
+         test::replace_metadata(f, m.dump());
+         return f;
+       }},
+      {"MetadataOverlapsTable", 2013,
+       [&] {
+         Bytes f = valid();
+         store_le<uint64_t>(&f[40], 64);
+         reseal_header(f);
+         return f;
+       }},
+      {"BadSectionName", 3001,
+       [&] {
+         Bytes f = valid();
+         f[entry_offset(f, 0)] = 'L';
+         reseal_header(f);
+         return f;
+       }},
+      {"DuplicateSection", 3002,
+       [&] {
+         Bytes f = valid();
+         f[entry_offset(f, 1) + 6] = '0';
+         reseal_header(f);
+         return f;
+       }},
+      {"UnknownElementType", 3003,
+       [&] {
+         Bytes f = valid();
+         store_le<uint32_t>(&f[entry_offset(f, 0) + 32], 99);
+         reseal_header(f);
+         return f;
+       }},
+      {"BadRank", 3004,
+       [&] {
+         Bytes f = valid();
+         store_le<uint32_t>(&f[entry_offset(f, 0) + 36], 0);
+         reseal_header(f);
+         return f;
+       }},
+      {"ShapeOverflow", 3005,
+       [&] {
+         Bytes f = valid();
+         store_le<uint64_t>(&f[entry_offset(f, 0) + 40], 1ull << 62);
+         store_le<uint64_t>(&f[entry_offset(f, 0) + 48], 1ull << 62);
+         reseal_header(f);
+         return f;
+       }},
+      {"LengthMismatch", 3006,
+       [&] {
+         Bytes f = valid();
+         store_le<uint64_t>(&f[entry_offset(f, 0) + 40], 4);
+         reseal_header(f);
+         return f;
+       }},
+      {"SectionOutOfBounds", 3007,
+       [&] {
+         Bytes f = valid();
+         store_le<uint64_t>(&f[entry_offset(f, 0) + 88], align_up(f.size(), 64));
+         reseal_header(f);
+         return f;
+       }},
+      {"Misaligned", 3008,
+       [&] {
+         Bytes f = valid();
+         uint64_t e = entry_offset(f, 0);
+         store_le<uint64_t>(&f[e + 88], load_le<uint64_t>(&f[e + 88]) + 4);
+         reseal_header(f);
+         return f;
+       }},
+      {"SectionsOverlap", 3009,
+       [&] {
+         Bytes f = valid();
+         store_le<uint64_t>(&f[entry_offset(f, 1) + 88], section_data_offset(f, 0));
+         reseal_header(f);
+         return f;
+       }},
+      {"SectionChecksum", 3010,
+       [&] {
+         Bytes f = valid();
+         f[section_data_offset(f, 0) + 5] ^= 1;
+         return f;
+       }},
+      {"ReservedNotZero", 3011,
+       [&] {
+         Bytes f = valid();
+         f[entry_offset(f, 0) + 120] = 1;
+         reseal_header(f);
+         return f;
+       }},
+      {"MissingRequiredSection", 3012,
+       [&] {
+         Bytes f = valid();
+         f[entry_offset(f, 0) + 4] = 'x';
+         reseal_header(f);
+         return f;
+       }},
+      {"WrongSectionType", 3013,
+       [&] {
+         Bytes f = valid();
+         store_le<uint32_t>(&f[entry_offset(f, 0) + 32], uint32_t(ElementType::u32));
+         reseal_header(f);
+         return f;
+       }},
+      {"UnknownSection", 3014,
+       [&] {
+         AssetWriter w = test::mip_writer(5, 3);
+         w.add<uint8_t>("extra", {1}, std::vector<uint8_t>{7});
+         return w.serialize();
+       }},
+      {"MipNonFinite", 11001, [&] { return with_level_texel(2, 1, [](float* v) { v[1] = std::nanf(""); }); }},
+      {"MipLevelMissing", 11002, [&] { return without_last_level(); }},
+      {"MipLongerThanOne", 11003,
+       [&] {
+         return with_level_texel(1, 0, [](float* v) {
+           v[0] = 0.9f;
+           v[1] = 0.9f;
+           v[2] = 0.9f;
+         });
+       }},
+      {"MipLevel0NotUnit", 11004,
+       [&] {
+         return with_level_texel(0, 4, [](float* v) {
+           for (int c = 0; c < 3; ++c) v[c] *= 0.9f;
+         });
+       }},
+      {"MipParentNotMean", 11005, [&] { return with_level_texel(1, 2, [](float* v) { v[0] *= 0.95f; }); }},
+      {"MipBadParameters", 11006,
+       [&] {
+         Bytes f = valid();
+         auto m = meta_text(f);
+         m["parameters"].erase("width");
+         test::replace_metadata(f, m.dump());
+         return f;
+       }},
+  };
+}
+
+class CorruptFixture : public ::testing::TestWithParam<CorruptCase> {};
+
+TEST_P(CorruptFixture, ReportsExactlyItsFinding) {
+  const CorruptCase& c = GetParam();
+  Bytes bytes = c.make();
+  std::vector<Finding> findings = validate_asset(bytes);
+  std::set<int> ids;
+  const MessageInfo* info = nullptr;
+  for (const auto& m : all_messages())
+    if (m.id == c.expected_id) info = &m;
+  ASSERT_NE(info, nullptr) << "fixture names an id that is not in the table";
+  for (const Finding& f : findings)
+    if (f.severity == Severity::error || info->severity == Severity::warning) ids.insert(f.id);
+  EXPECT_EQ(ids, std::set<int>{c.expected_id}) << (findings.empty() ? "no findings" : findings.front().message);
+
+  if (info->severity == Severity::warning) {
+    EXPECT_NO_THROW(Asset::parse(bytes, "fixture"));
+  } else if (c.expected_id < 10000) {  // kind invariants are validate's job, not the reader's
+    try {
+      Asset::parse(bytes, "fixture");
+      ADD_FAILURE() << "reader accepted a corrupt file";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), c.expected_id == msg::newer_major.id ? ExitCode::unsupported : ExitCode::invalid_input);
+      EXPECT_NE(std::string(e.what()).find(std::to_string(c.expected_id)), std::string::npos) << e.what();
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Findings, CorruptFixture, ::testing::ValuesIn(corrupt_cases()),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+TEST(ValidationMessages, IdsUniqueAndGroupedByThousand) {
+  std::set<int> seen;
+  for (const auto& m : all_messages()) {
+    EXPECT_TRUE(seen.insert(m.id).second) << "duplicate id " << m.id;
+    bool grouped = (m.id >= 1000 && m.id < 4000) || m.id >= 11000;
+    EXPECT_TRUE(grouped) << m.id;
+  }
+}
+
+TEST(ValidationMessages, EveryIdHasAFixture) {
+  std::set<int> covered;
+  for (const auto& c : corrupt_cases()) covered.insert(c.expected_id);
+  for (const auto& m : all_messages()) EXPECT_TRUE(covered.count(m.id)) << "no corrupt fixture for id " << m.id;
+}
+
+TEST(ValidationMessages, NewerMajorNamesBothVersions) {
+  Bytes f = test::valid_mip_bytes();
+  store_le<uint16_t>(&f[8], 3);
+  store_le<uint16_t>(&f[10], 2);
+  try {
+    Asset::parse(f, "x.mbk");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::unsupported);
+    EXPECT_NE(e.message().find("3.2"), std::string::npos) << e.message();
+    EXPECT_NE(e.message().find("1.0"), std::string::npos) << e.message();
+  }
+}
+
+TEST(ValidationMessages, ValidFileHasNoFindings) {
+  for (auto [w, h] : {std::pair{1u, 1u}, {5u, 3u}, {1u, 9u}, {16u, 16u}, {33u, 17u}}) {
+    auto findings = validate_asset(test::valid_mip_bytes(w, h));
+    EXPECT_TRUE(findings.empty()) << w << "x" << h << ": " << findings.front().message;
+  }
+}
+
+}  // namespace
+}  // namespace mbk

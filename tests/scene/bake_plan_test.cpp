@@ -1,0 +1,145 @@
+// Bake planning: each asset once however many materials share it, stable file names, default folder; and
+// the skip/rebuild decisions of `bake` (asset_freshness.h) against real baked files.
+#include <gtest/gtest.h>
+
+#include <regex>
+
+#include "formats/error.h"
+#include "libbake/scene/asset_freshness.h"
+#include "libbake/scene/bake_plan.h"
+#include "tests/scene/scene_test_fixtures.h"
+
+namespace mbk {
+namespace {
+
+using nlohmann::json;
+using testing::ScratchDir;
+
+json map_material(const std::string& path, const std::vector<std::string>& effects,
+                  const std::string& convention = "+Y") {
+  return {{"normal_map", {{"path", path}, {"convention", convention}}}, {"effects", effects}};
+}
+
+TEST(BakePlan, TwoMaterialsSharingAMapBakeOneAsset) {
+  // "maps/../maps/a.png" names the same file as "maps/a.png".
+  const json materials = {{"a", map_material("maps/a.png", {"mip"})},
+                          {"b", map_material("maps/../maps/a.png", {"mip"})},
+                          {"c", map_material("maps/a.png", {})}};
+  const Scene scene = parse_scene(testing::small_scene(materials), "/scenes");
+  const auto plan = plan_assets(scene);
+  ASSERT_EQ(plan.size(), 1u);
+  EXPECT_EQ(plan[0].recipe->kind, "mip");
+  ASSERT_EQ(plan[0].uses.size(), 2u);
+  EXPECT_EQ(plan[0].uses[0].material, "a");
+  EXPECT_EQ(plan[0].uses[1].material, "b");
+  EXPECT_EQ(assets_for(plan, "b", "mip"), std::vector<const PlannedAsset*>{&plan[0]});
+  EXPECT_TRUE(assets_for(plan, "c", "mip").empty());
+}
+
+TEST(BakePlan, DifferentConventionOrMapIsADifferentAsset) {
+  const json materials = {{"a", map_material("maps/a.png", {"mip"})},
+                          {"b", map_material("maps/a.png", {"mip"}, "-Y")},
+                          {"c", map_material("maps/c.png", {"mip"})}};
+  const auto plan = plan_assets(parse_scene(testing::small_scene(materials), "/scenes"));
+  ASSERT_EQ(plan.size(), 3u);
+  EXPECT_NE(plan[0].file_name, plan[1].file_name);
+  EXPECT_NE(plan[0].file_name, plan[2].file_name);
+}
+
+TEST(BakePlan, PlainMaterialsPlanNothing) {
+  const json materials = {{"a", map_material("maps/a.png", {})}, {"b", json::object()}, {"c", json::object()}};
+  EXPECT_TRUE(plan_assets(parse_scene(testing::small_scene(materials), "/scenes")).empty());
+}
+
+TEST(BakePlan, FileNamesAreStableAndIndependentOfWhereTheSceneLives) {
+  const json materials = {
+      {"a", map_material("../maps/bricks.v2.png", {"mip"})}, {"b", json::object()}, {"c", json::object()}};
+  const auto here = plan_assets(parse_scene(testing::small_scene(materials), "/projects/one/scenes"));
+  const auto there = plan_assets(parse_scene(testing::small_scene(materials), "/elsewhere/scenes"));
+  ASSERT_EQ(here.size(), 1u);
+  EXPECT_EQ(here[0].file_name, there[0].file_name);
+  // <map stem, unsafe characters replaced>.<kind>.<8 hex>.mbk
+  EXPECT_TRUE(std::regex_match(here[0].file_name, std::regex(R"(bricks_v2\.mip\.[0-9a-f]{8}\.mbk)")))
+      << here[0].file_name;
+}
+
+TEST(BakePlan, DefaultAssetFolderSitsBesideTheScene) {
+  ScratchDir dir("plan_folder");
+  testing::write_json(dir / "demo.json",
+                      testing::small_scene({{"a", json::object()}, {"b", json::object()}, {"c", json::object()}}));
+  EXPECT_EQ(default_asset_folder(load_scene(dir / "demo.json")), dir / "demo.assets");
+}
+
+class AssetFreshnessTest : public ::testing::Test {
+ protected:
+  ScratchDir dir{"freshness"};
+  PlannedAsset planned_for(const std::string& convention = "+Y") {
+    const json materials = {
+        {"a", map_material("map.exr", {"mip"}, convention)}, {"b", json::object()}, {"c", json::object()}};
+    testing::write_json(dir / "s.json", testing::small_scene(materials));
+    return plan_assets(load_scene(dir / "s.json")).at(0);
+  }
+  void bake(const PlannedAsset& a, const std::filesystem::path& file) {
+    a.recipe->bake(load_normal_map(a.input.path, a.input.load_options())).write(file);
+  }
+  AssetFreshness check(const PlannedAsset& a, const std::filesystem::path& file) {
+    return check_asset_freshness(a, file, file_content_hash(a.input.path));
+  }
+};
+
+TEST_F(AssetFreshnessTest, MissingThenUpToDateAfterBaking) {
+  testing::write_bumpy_map(dir / "map.exr");
+  const PlannedAsset a = planned_for();
+  const auto file = dir / a.file_name;
+  EXPECT_EQ(check(a, file).state, AssetState::missing);
+  bake(a, file);
+  const AssetFreshness f = check(a, file);
+  EXPECT_EQ(f.state, AssetState::up_to_date) << f.reason;
+}
+
+TEST_F(AssetFreshnessTest, ChangedMapContentIsStale) {
+  testing::write_bumpy_map(dir / "map.exr");
+  const PlannedAsset a = planned_for();
+  bake(a, dir / a.file_name);
+  testing::write_bumpy_map(dir / "map.exr", 24, 21);
+  const AssetFreshness f = check(a, dir / a.file_name);
+  EXPECT_EQ(f.state, AssetState::stale);
+  EXPECT_NE(f.reason.find("input changed"), std::string::npos) << f.reason;
+}
+
+TEST_F(AssetFreshnessTest, ChangedConventionIsStale) {
+  testing::write_bumpy_map(dir / "map.exr");
+  const PlannedAsset plus = planned_for("+Y");
+  bake(plus, dir / "asset.mbk");
+  const AssetFreshness f = check(planned_for("-Y"), dir / "asset.mbk");
+  EXPECT_EQ(f.state, AssetState::stale);
+  EXPECT_NE(f.reason.find("convention changed (recorded +Y, now -Y)"), std::string::npos) << f.reason;
+}
+
+TEST_F(AssetFreshnessTest, ChangedParameterIsStale) {
+  testing::write_bumpy_map(dir / "map.exr");
+  PlannedAsset a = planned_for();
+  bake(a, dir / a.file_name);
+  AssetRecipe changed = *a.recipe;
+  changed.parameters = {{"levels", 2}};  // the baked file records the real level count of a 24x20 map: 6
+  a.recipe = &changed;
+  const AssetFreshness f = check(a, dir / a.file_name);
+  EXPECT_EQ(f.state, AssetState::stale);
+  EXPECT_NE(f.reason.find("parameter 'levels' changed"), std::string::npos) << f.reason;
+  changed.parameters = {{"levels", 6}};
+  EXPECT_EQ(check(a, dir / a.file_name).state, AssetState::up_to_date);
+}
+
+TEST_F(AssetFreshnessTest, CorruptFileIsStale) {
+  testing::write_bumpy_map(dir / "map.exr");
+  const PlannedAsset a = planned_for();
+  const auto file = dir / a.file_name;
+  bake(a, file);
+  std::filesystem::resize_file(file, std::filesystem::file_size(file) - 1);
+  const AssetFreshness f = check(a, file);
+  EXPECT_EQ(f.state, AssetState::stale);
+  EXPECT_NE(f.reason.find("not a valid asset"), std::string::npos) << f.reason;
+}
+
+}  // namespace
+}  // namespace mbk
