@@ -68,6 +68,8 @@ struct CliCase {
   std::string name;
   json spec;
 };
+// gtest prints a failing parameter with this instead of its bytes.
+void PrintTo(const CliCase& c, std::ostream* os) { *os << c.name; }
 
 std::vector<CliCase> load_cases() {
   std::vector<CliCase> cases;
