@@ -32,6 +32,8 @@ std::unique_ptr<Command> make_info_command();
 std::unique_ptr<Command> make_validate_command();
 std::unique_ptr<Command> make_gen_command();
 std::unique_ptr<Command> make_mip_command();
+std::unique_ptr<Command> make_lut_command();
+std::unique_ptr<Command> make_rmq_command();
 std::unique_ptr<Command> make_bake_command();
 std::unique_ptr<Command> make_render_command();
 std::unique_ptr<Command> make_compare_command();

@@ -42,5 +42,7 @@ const AssetKind* find_kind(std::string_view name);
 
 // The declarations of each kind, one file each.
 AssetKind mip_kind();
+AssetKind lut_kind();
+AssetKind rmq_kind();
 
 }  // namespace mbk

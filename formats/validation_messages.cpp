@@ -57,6 +57,19 @@ std::span<const MessageInfo> all_messages() {
       mip_level0_not_unit,
       mip_parent_not_mean,
       mip_bad_parameters,
+      lut_non_finite,
+      lut_bad_parameters,
+      lut_section_shape,
+      lut_bad_domain,
+      lut_not_monotone,
+      lut_negative_slope,
+      lut_slope_mismatch,
+      lut_ends_mismatch,
+      rmq_bad_parameters,
+      rmq_section_shape,
+      rmq_bad_range,
+      rmq_min_above_max,
+      rmq_not_nested,
   };
   return kAll;
 }

@@ -11,6 +11,8 @@
 #include "formats/asset.h"
 #include "formats/validate.h"
 #include "tests/formats/asset_fixtures.h"
+#include "tests/formats/lut_fixtures.h"
+#include "tests/formats/rmq_fixtures.h"
 
 namespace mbk {
 namespace {
@@ -26,6 +28,8 @@ struct CorruptCase {
   int expected_id;
   std::function<Bytes()> make;
 };
+// gtest prints a failing parameter with this instead of its bytes.
+void PrintTo(const CorruptCase& c, std::ostream* os) { *os << c.name << " (id " << c.expected_id << ")"; }
 
 // First byte in a gap between regions of a valid file (the fixture always has one: 5x3 level data is not a
 // multiple of 64 bytes).
@@ -299,6 +303,21 @@ std::vector<CorruptCase> corrupt_cases() {
          test::replace_metadata(f, m.dump());
          return f;
        }},
+      {"LutNonFinite", 12001, [] { return test::lut_with_value(2, 1, std::nanf("")); }},
+      {"LutSizeOutOfRange", 12002, [] { return test::lut_with_size(1); }},
+      {"LutShapeDisagreesWithSize", 12003, [] { return test::lut_with_size(6); }},
+      {"LutDomainReversed", 12004, [] { return test::lut_with_value(0, 0, 0.6f); }},  // n_x x_lo above x_hi
+      {"LutInverseDecreases", 12005, [] { return test::lut_with_value(3, 2, -0.3f); }},
+      {"LutNegativeSlope", 12006, [] { return test::lut_with_value(2, 1, -1.0f); }},
+      {"LutSlopeNotTheInterpolants", 12007, [] { return test::lut_with_value(2, 2, 3.03f); }},  // exact: 3
+      {"LutForwardStartsBelowZLo", 12008, [] { return test::lut_with_value(1, 0, -1.6f); }},
+      {"RmqBadParameters", 13001, [] { return test::rmq_with_parameter("patch", 3); }},
+      {"RmqTableShape", 13002, [] { return test::rmq_with_parameter("bits", 8); }},  // the table is u16
+      {"RmqRangeLoAboveHi", 13003, [] { return test::rmq_with_range_value(0, 1.0); }},
+      {"RmqMinAboveMax", 13004,
+       [] { return test::rmq_with_code(0, 4, 2, 0, [](uint16_t, uint16_t max) { return uint16_t(max + 1); }); }},
+      {"RmqParentMissesAChild", 13005,
+       [] { return test::rmq_with_code(1, 0, 0, 2, [](uint16_t min, uint16_t) { return uint16_t(min + 1); }); }},
   };
 }
 

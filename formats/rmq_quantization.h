@@ -1,0 +1,38 @@
+// The conservative quantizer of the `rmq` asset kind (formats/SPEC.md, "Kind 3: rmq"): how a stored code
+// becomes a normal component, and how a bake picks codes so that stored bounds always contain the truth.
+//
+// A component's range [lo, hi] (derived from the data, stored in the asset) is cut into Q = 2^bits - 1 steps
+// of one quantum (hi - lo) / Q. Reading a code q (0 <= q <= Q) gives, in double:
+//
+//   value(0) = lo,   value(Q) = hi,   value(q) = min(hi, lo + q * ((hi - lo) / Q)) otherwise.
+//
+// The two ends are exact (a plain lo + Q * quantum can miss hi by an ulp, and a maximum equal to hi would
+// then have no code that bounds it), and value() never decreases with q (each operation is monotone).
+// A minimum v is stored as quantize_down(v): a code whose value is <= v; a maximum as quantize_up(v): the
+// smallest code whose value is >= v. Both are within one quantum of v (up to double rounding), and
+// quantize_down(v) <= quantize_up(v), so an interval's codes are ordered whenever its ends are.
+// Both functions are monotone in v, so min/max commute with them: the quantized minimum of a set is the
+// minimum of its quantized values. The RMQ bake relies on that to build coarser levels from codes alone.
+#pragma once
+
+#include <cstdint>
+
+namespace mbk {
+
+struct RmqRange {
+  double lo = 0.0, hi = 0.0;
+  double quantum(uint32_t bits) const;  // (hi - lo) / Q
+};
+
+inline constexpr uint32_t rmq_code_max(uint32_t bits) { return (1u << bits) - 1u; }
+
+// The value of a code (formula above). Requires code <= Q and a finite range with lo <= hi.
+double rmq_dequantize(uint32_t code, const RmqRange& range, uint32_t bits);
+
+// The smallest code whose value is >= v. Requires lo <= v <= hi (Error(runtime_failure) otherwise).
+uint32_t rmq_quantize_up(double v, const RmqRange& range, uint32_t bits);
+// quantize_up(v) when its value is exactly v, else the code just below it: the largest code whose value is
+// <= v among those not above quantize_up(v). Same requirement.
+uint32_t rmq_quantize_down(double v, const RmqRange& range, uint32_t bits);
+
+}  // namespace mbk

@@ -1,0 +1,79 @@
+// Glints from an example normal map with constant storage: the technique block of libbake/glint/.
+//
+// Papers (keys in libbake/REFERENCES.md):
+// - [Wang20] Beibei Wang, Milos Hasan, Nicolas Holzschuch, Ling-Qi Yan. Example-Based Microstructure
+//   Rendering with Constant Storage. ACM Transactions on Graphics 39(5), 2020.
+// - [Heitz18] Eric Heitz, Fabrice Neyret. High-Performance By-Example Noise using a Histogram-Preserving
+//   Blending Operator. Proc. ACM Comput. Graph. Interact. Tech. (HPG) 1(2), 2018.
+// - [Yan16] Ling-Qi Yan, Milos Hasan, Steve Marschner, Ravi Ramamoorthi. Position-Normal Distributions for
+//   Efficient Rendering of Specular Microstructure. ACM Transactions on Graphics 35(4), 2016.
+//
+// A small example normal map drives an infinite, non-repeating microstructure: every point of the surface is
+// blended from four example patches ([Wang20] Sec. 4.2, blending of [Heitz18]); two baked tables make its
+// glints renderable: the standardization LUTs of histogram-preserving blending ([Wang20] Eq. 6, asset kind
+// `lut`) and the RMQ min/max tables of the range queries ([Wang20] Sec. 4.4, asset kind `rmq`).
+//
+// Implemented so far:
+// - Standardization LUTs (`microbake lut`, asset kind `lut`, id 2): standard_normal.h (exact Phi and
+//   Phi^-1), empirical_standardization.h (the exact transform G of one channel and its inverse),
+//   standardization_sampling.h (G^-1 sampled into a table, the forward table as the exact inverse of its
+//   interpolant, and both derivative tables), lut_lookup.h (the one lookup convention, over plain arrays: what
+//   the evaluator uses), standardization_lut.h (the tables of an asset, as the evaluator reads them),
+//   lut_asset.h (the bake); the layout and the sample positions live in formats/lut_layout.h, shared with
+//   `validate`.
+// - RMQ min/max tables (`microbake rmq`, asset kind `rmq`, id 3; [Wang20] Sec. 4.4, 5.1, Alg. 1-2):
+//   example_jacobian.h (the per-texel Jacobian), element_normal_bounds.h (leaf intervals: the element's
+//   reach), rmq_table.h (the sparse table, quantized; its deviations), rmq_asset.h (the bake); the layout, the
+//   conservative quantizer and the O(1) rectangle query the evaluator uses live in formats/ (rmq_layout.h,
+//   rmq_quantization.h, rmq_query.h), which is all a renderer needs to read the asset.
+// - Not yet: point and range queries of the blend, Jacobians of the blend, the P-NDF and its sampling.
+//
+// Conventions shared by every glint table (they all describe the same example; the evaluator reads them all):
+// - The example is a NormalMap (libbake/image/normal_map.h: +Y, row 0 at the top, texel (x, row)). Glints use
+//   the "normal components" n_x, n_y of the unit normal ([Wang20]: z is dropped), each blended separately.
+// - Borders: the example is NOT assumed tileable. Example patches always lie inside the example, so tables
+//   CLIP at the border: a square or a difference stencil that would leave the image uses only the texels
+//   inside it, and derivatives at the border use one-sided differences.
+// - Position-normal element ([Yan16], [Wang20] Sec. 3.1): spatial sigma_h = 1.5 / sqrt(12) texels, spatial
+//   cut-off 3 sigma_h, normal cut-off 4 sigma_r (sigma_r, the intrinsic roughness, is applied at query time,
+//   never baked), Gaussian pixel footprint cut-off 3 sigma.
+// - Per-texel Jacobian J = d(n_x, n_y) / d(x, y) in texel units, by central differences of the example
+//   (one-sided at the borders); a texel's element spans n +/- (|dn/dx| + |dn/dy|) * 3 sigma_h per component.
+// - Standardization ([Heitz18] Sec. 3): the Gaussian is the STANDARD normal N(0, 1). [Heitz18] use mean 0.5
+//   and standard deviation 1/6; the two differ by an affine map, which the variance-preserving blend
+//   ([Wang20] Eq. 5) commutes with, so blended results are identical.
+// - Determinism: identical bytes whatever --threads (per-index results, serial reductions).
+//
+// Deviations from the papers and their public code, each tied to the test that holds it:
+// - Deviation [Heitz18]: ranks are MID-RANKS, so equal example values get one and the same Gaussian value and
+//   a constant channel maps to the constant 0 with zero derivative; sorting with arbitrary tie-breaking would
+//   map equal inputs to different outputs (tests: EmpiricalStandardization.TiesShareOneGaussianValue,
+//   StandardizationLut.ConstantChannelIsFlatAndFinite).
+// - Deviation [Heitz18]: G is continuous between example values (the mid-rank CDF interpolated linearly between
+//   consecutive distinct values, then Phi^-1), so G^-1(G(x)) = x exactly for the transform (test:
+//   EmpiricalStandardization.InverseUndoesForward).
+// - Deviation [Heitz18], [Wang20]: the forward table samples the exact inverse of the inverse table's interpolant
+//   rather than G itself, which bounds the round trip through the two tables by one forward step, (max - min) /
+//   (size - 1), for every distribution (standardization_sampling.h; test:
+//   StandardizationLut.RoundTripWithinOneForwardStep_GeneratedKinds).
+// - Deviation [Heitz18]: the inverse table is indexed by the Gaussian value z itself, over [G(min), G(max)],
+//   not by Phi(z) in [0, 1], so its derivative table is dG^-1/dz directly (the Jacobian needs no chain rule
+//   through Phi), and outside that range G^-1 is exactly the clamped end value, so clamping loses nothing
+//   (tests: StandardizationLut.LookupsClampOutsideTheirDomain, StandardizationLut.TailMassIsTheEndRanks).
+// - Deviation [Wang20]: the derivative tables are the exact derivatives of the stored piecewise-linear
+//   interpolants (one slope per interval), not differences of the continuous transform, so values and
+//   Jacobians stay consistent (test: StandardizationLut.SlopesAreFiniteDifferencesOfTheInterpolant).
+// - Phi^-1 is exact to double precision (Acklam's rational approximation refined by Halley steps on erfc),
+//   not a single-precision approximation (tests: StandardNormal.*).
+#pragma once
+
+namespace mbk {
+
+// Spatial standard deviation of one texel's position-normal element, in texels ([Yan16]; 1.5 / sqrt(12)).
+inline constexpr double kGlintElementSigmaTexels = 0.43301270189221935;
+// Truncation radii, in standard deviations: spatial (element), normal (intrinsic roughness), pixel footprint.
+inline constexpr double kGlintSpatialCutoffSigmas = 3.0;
+inline constexpr double kGlintNormalCutoffSigmas = 4.0;
+inline constexpr double kGlintFootprintCutoffSigmas = 3.0;
+
+}  // namespace mbk

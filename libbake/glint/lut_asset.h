@@ -1,0 +1,42 @@
+// Baking asset kind `lut` (formats/SPEC.md "Kind 2: lut"; formats/lut_layout.h): the standardization tables of
+// an example normal map for histogram-preserving blending ([Wang20] Eq. 6, [Heitz18] Sec. 3), per channel n_x
+// and n_y, with the statistics that say what their sampling costs. Conventions in glint_technique.h.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include <nlohmann/json.hpp>
+
+#include "formats/asset_writer.h"
+#include "libbake/core/progress.h"
+#include "libbake/glint/standardization_lut.h"
+#include "libbake/image/normal_map.h"
+
+namespace mbk {
+
+struct LutChannelStatistics {
+  double min = 0.0, max = 0.0;                    // the channel's range in the example
+  uint64_t distinct_values = 0;                   // distinct float values (ties share a mid-rank)
+  double gaussian_min = 0.0, gaussian_max = 0.0;  // the inverse table's range [z_lo, z_hi] = [G(min), G(max)]
+  // max |G^-1(G(x)) - x| over the example's values x, both through the stored tables (lut_lookup.h), in normal
+  // units: what sampling at `size` costs.
+  double round_trip_error = 0.0;
+  // N(0, 1) mass outside the inverse table's range [z_lo, z_hi]: where blended values clamp to min or max.
+  double clipped_tail_mass = 0.0;
+  nlohmann::json to_json() const;
+};
+
+struct BakedLut {
+  StandardizationLut tables;
+  std::array<LutChannelStatistics, 2> statistics;  // n_x, n_y
+};
+
+// Standardizes both channels of `map` and samples them at `size` (2..65536) samples per table. Deterministic
+// whatever the thread count. Throws Error(bad_command_line) for a size out of range.
+BakedLut bake_standardization_lut(const NormalMap& map, uint32_t size, Progress& progress);
+
+// The asset: sections and metadata of formats/SPEC.md "Kind 2: lut" ("inputs" from `input`).
+AssetWriter lut_asset_writer(const BakedLut& lut, const InputRecord& input);
+
+}  // namespace mbk
