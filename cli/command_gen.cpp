@@ -53,6 +53,7 @@ class GenCommand : public Command {
     if (ext != ".png" && ext != ".exr")
       throw Error(ExitCode::bad_command_line, "gen writes .png (16-bit) or .exr (float) files, not '" + ext + "'",
                   options_.output.path);
+    options_.output.check_writable();
   }
 
   int run() override {

@@ -18,13 +18,22 @@ class MipCommand : public Command {
     add_run_options(app, options_.run);
   }
 
-  void check() override { (void)options_.input.load_options(); }  // rejects an unknown --convention early
+  void check() override {
+    (void)options_.input.load_options();  // rejects an unknown --convention early
+    options_.output.require_extension(".mbk");
+    options_.output.check_writable();
+  }
 
   int run() override {
     options_.run.apply();
+    Progress progress(options_.run.progress_mode());
+    progress.start("mip (load, bake, write)", 3);
     const LoadedNormalMap input = load_normal_map(options_.input.path, options_.input.load_options());
+    progress.advance();
     const AssetWriter writer = bake_mip_asset(input);
+    progress.advance();
     options_.output.write_bytes(writer.serialize());
+    progress.finish();
     if (!options_.run.quiet) {
       std::cout << "mip: wrote " << options_.output.path << " (" << input.map.width << "x" << input.map.height << ", "
                 << mip_level_sizes(input.map.width, input.map.height).size() << " levels";

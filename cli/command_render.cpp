@@ -38,6 +38,7 @@ class RenderCommand : public Command {
     if (options_.reference > 0 && spp_option_->count() > 0)
       throw Error(ExitCode::bad_command_line,
                   "--spp and --reference exclude each other: the reference takes N x N samples per pixel");
+    options_.output.check_writable();
   }
 
   int run() override {

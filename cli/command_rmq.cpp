@@ -42,7 +42,11 @@ class RmqCommand : public Command {
     add_run_options(app, options_.run);
   }
 
-  void check() override { (void)options_.input.load_options(); }  // rejects an unknown --convention early
+  void check() override {
+    (void)options_.input.load_options();  // rejects an unknown --convention early
+    options_.output.require_extension(".mbk");
+    options_.output.check_writable();
+  }
 
   int run() override {
     options_.run.apply();

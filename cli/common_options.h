@@ -33,6 +33,11 @@ struct OutputOption {
   // extension), then flushes and renames it into place. On any exception the temporary is removed.
   void write_with(const std::function<void(const std::filesystem::path& temporary)>& produce) const;
   void write_bytes(const std::vector<uint8_t>& bytes) const;
+  // Fails early (Error io_failure) when the output cannot be written: its folder is missing or the path is a
+  // folder. Commands call it from check(), before any long work.
+  void check_writable() const;
+  // Error(bad_command_line) unless the path ends in `extension` (e.g. ".mbk"), compared case-insensitively.
+  void require_extension(const std::string& extension) const;
 };
 // -o/--output, required. `what` describes the file (e.g. "output asset (.mbk)").
 void add_output_option(CLI::App& app, OutputOption& output, const std::string& what);

@@ -112,6 +112,18 @@ std::optional<ParsedContainer> parse_container(std::span<const uint8_t> bytes, s
   if (p.metadata.is_discarded() || !p.metadata.is_object()) return fail(msg::metadata_not_json, "");
   for (const char* key : {"producer", "kind", "inputs", "parameters", "conventions", "statistics"})
     if (!p.metadata.contains(key)) return fail(msg::metadata_missing_key, std::string("'") + key + "'", {{"key", key}});
+  // Readers (info, the evaluator) rely on these shapes; a file that breaks them is corrupt, not "internal".
+  const auto& producer = p.metadata["producer"];
+  const bool producer_ok = producer.is_object() && producer.contains("name") && producer["name"].is_string() &&
+                           producer.contains("version") && producer["version"].is_string();
+  if (!producer_ok)
+    return fail(msg::metadata_wrong_type, "'producer' must be {\"name\": string, \"version\": string}",
+                {{"key", "producer"}});
+  if (!p.metadata["inputs"].is_array())
+    return fail(msg::metadata_wrong_type, "'inputs' must be an array", {{"key", "inputs"}});
+  for (const char* key : {"parameters", "conventions", "statistics"})
+    if (!p.metadata[key].is_object())
+      return fail(msg::metadata_wrong_type, std::string("'") + key + "' must be an object", {{"key", key}});
   const AssetKind* kind = find_kind(h.kind);
   if (!kind) return fail(msg::unknown_kind, "kind id " + std::to_string(h.kind), {{"kind_id", h.kind}});
   if (!p.metadata["kind"].is_string() || p.metadata["kind"].get<std::string>() != kind->name)

@@ -1,7 +1,7 @@
 // Asset kind 1, `mip`: the MIP pyramid of a normal map, the baseline every filtering technique is compared
 // with (and the input of Toksvig-style roughening, whose lengths it keeps). Sections level_0 .. level_{L-1},
-// each f32 [height, width, 3]: level 0 holds the unit normals, level k the unnormalised mean of the finest
-// normals each texel covers (formats/mip_levels.h). formats/SPEC.md, "Kind 1: mip".
+// each f32 [height, width, 3]: level 0 holds the unit normals, level k the unnormalised area-weighted mean of
+// the finest normals over each texel's rectangle (formats/mip_levels.h). formats/SPEC.md, "Kind 1: mip".
 #include <cmath>
 
 #include "formats/asset.h"
@@ -13,8 +13,9 @@ namespace {
 
 std::string level_name(size_t k) { return "level_" + std::to_string(k); }
 
-// Tolerances: level 0 is renormalised in float (|n| - 1 within a few ulps); coarser levels are means
-// accumulated in double and stored in float, so a parent matches its weighted children to float rounding.
+// Tolerances: level 0 is renormalised in float (|n| - 1 within a few ulps); coarser levels are means of
+// level 0 accumulated in double and stored in float, so a texel matches the mean recomputed here from the
+// stored level 0 to float rounding.
 constexpr double kUnitTolerance = 1e-5;
 constexpr double kMeanTolerance = 2e-6;
 
@@ -53,8 +54,10 @@ void check_mip(const Asset& a, std::vector<Finding>& out) {
         return;
       }
   const uint32_t W = sizes[0].width, H = sizes[0].height;
+  const std::vector<float>& finest = levels[0];
   for (size_t k = 0; k < levels.size(); ++k) {
     const auto& L = levels[k];
+    const auto wx = mip_texel_weights(sizes[k].width, W), wy = mip_texel_weights(sizes[k].height, H);
     for (uint32_t y = 0; y < sizes[k].height; ++y)
       for (uint32_t x = 0; x < sizes[k].width; ++x) {
         const float* n = &L[(size_t(y) * sizes[k].width + x) * 3];
@@ -69,21 +72,18 @@ void check_mip(const Asset& a, std::vector<Finding>& out) {
           return;
         }
         if (k == 0) continue;
-        // The parent is the coverage-weighted mean of its children in level k-1.
-        const auto& C = levels[k - 1];
-        const uint32_t cw = sizes[k - 1].width, ch = sizes[k - 1].height;
-        double sum[3] = {0, 0, 0}, weight = 0;
-        for (uint32_t cy = 2 * y; cy < std::min(2 * y + 2, ch); ++cy)
-          for (uint32_t cx = 2 * x; cx < std::min(2 * x + 2, cw); ++cx) {
-            const double w = double(mip_coverage(W, k - 1, cx)) * mip_coverage(H, k - 1, cy);
-            for (int c = 0; c < 3; ++c) sum[c] += w * C[(size_t(cy) * cw + cx) * 3 + c];
-            weight += w;
+        // The texel is the area-weighted mean of level 0 over its rectangle.
+        double mean[3] = {0, 0, 0};
+        for (const MipWeight& fy : wy[y])
+          for (const MipWeight& fx : wx[x]) {
+            const float* f = &finest[(size_t(fy.index) * W + fx.index) * 3];
+            for (int c = 0; c < 3; ++c) mean[c] += fy.weight * fx.weight * f[c];
           }
         for (int c = 0; c < 3; ++c)
-          if (std::abs(sum[c] / weight - n[c]) > kMeanTolerance) {
+          if (std::abs(mean[c] - n[c]) > kMeanTolerance) {
             out.push_back(make_finding(msg::mip_parent_not_mean, at + ": channel " + std::to_string(c) + " is " +
-                                                                     std::to_string(n[c]) + ", children give " +
-                                                                     std::to_string(sum[c] / weight)));
+                                                                     std::to_string(n[c]) + ", level 0 gives " +
+                                                                     std::to_string(mean[c])));
             return;
           }
       }

@@ -1,9 +1,11 @@
 // The MIP level rule shared by every pyramid microbake bakes (normal MIP pyramids here; SH and vMF
-// pyramids later). Level 0 is the full image; level k has ceil(W / 2^k) x ceil(H / 2^k) texels, down to
-// 1 x 1. Texel (i, j) of level k covers the finest texels [i 2^k, (i+1) 2^k) x [j 2^k, (j+1) 2^k) clipped to
-// the image, and holds the mean over exactly those: odd sizes need no special case and no texel is counted
-// twice. Computed from level k-1, a parent is the mean of its 1, 2 or 4 children weighted by the number of
-// finest texels each covers.
+// pyramids later). Level 0 is the full W x H image; level k has max(1, floor(W / 2^k)) x max(1, floor(H / 2^k))
+// texels (the size a GPU allocates for mip level k), down to 1 x 1: L = 1 + floor(log2(max(W, H))) levels.
+// Texel i of a level of w texels along an axis of W finest texels covers the finest-texel interval
+// [i W / w, (i+1) W / w), so the level's texels divide the image (and uv in [0, 1]) evenly and a lookup at a
+// texel's centre sees what the texel covers. A texel holds the area-weighted mean over its rectangle: finest
+// texels it covers partly count with the covered fraction. The weights are separable (overlap along x times
+// overlap along y); for power-of-two sizes they reduce to plain 2^k x 2^k box means.
 #pragma once
 
 #include <cstdint>
@@ -15,9 +17,18 @@ struct LevelSize {
   uint32_t width, height;
 };
 
+// Empty when width or height is 0.
 std::vector<LevelSize> mip_level_sizes(uint32_t width, uint32_t height);
 
-// Number of finest texels that texel i of level k covers along an axis of `extent` finest texels.
-uint32_t mip_coverage(uint32_t extent, uint32_t level, uint32_t i);
+// One finest texel under a level texel along an axis, and its share of the texel's length.
+struct MipWeight {
+  uint32_t index;  // finest texel along the axis
+  double weight;   // overlap length / texel length, in (0, 1]; a texel's weights sum to 1
+};
+
+// For an axis of `extent` finest texels shown by `level_extent` texels (1 <= level_extent <= extent, else
+// Error(runtime_failure)): per level texel, the finest texels it overlaps in increasing order with their
+// weights. The mean of texel (i, j) is sum over x-list(i), y-list(j) of weight_x weight_y finest(x, y).
+std::vector<std::vector<MipWeight>> mip_texel_weights(uint32_t level_extent, uint32_t extent);
 
 }  // namespace mbk

@@ -37,6 +37,7 @@ std::span<const MessageInfo> all_messages() {
       unknown_kind,
       kind_mismatch,
       regions_overlap,
+      metadata_wrong_type,
       bad_section_name,
       duplicate_section,
       unknown_element_type,

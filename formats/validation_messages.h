@@ -56,6 +56,8 @@ inline constexpr MessageInfo metadata_missing_key{2010, Severity::error, "metada
 inline constexpr MessageInfo unknown_kind{2011, Severity::error, "unknown asset kind"};
 inline constexpr MessageInfo kind_mismatch{2012, Severity::error, "metadata kind differs from the header's kind id"};
 inline constexpr MessageInfo regions_overlap{2013, Severity::error, "header, metadata and section table overlap"};
+inline constexpr MessageInfo metadata_wrong_type{2014, Severity::error,
+                                                 "a required metadata key has the wrong JSON type"};
 // 3xxx: sections
 inline constexpr MessageInfo bad_section_name{3001, Severity::error, "invalid section name"};
 inline constexpr MessageInfo duplicate_section{3002, Severity::error, "duplicate section name"};

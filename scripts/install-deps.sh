@@ -3,7 +3,7 @@
 # (quiet and fast when everything is there). Extra package names may be passed as arguments.
 set -euo pipefail
 
-packages=(cmake ninja-build g++ pkg-config ccache
+packages=(cmake ninja-build g++ pkg-config ccache clang-format
           libopenimageio-dev libopenexr-dev libeigen3-dev libcli11-dev nlohmann-json3-dev
           libflann-dev liblz4-dev libgtest-dev libxxhash-dev "$@")
 

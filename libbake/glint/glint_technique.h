@@ -26,7 +26,13 @@
 //   reach), rmq_table.h (the sparse table, quantized; its deviations), rmq_asset.h (the bake); the layout, the
 //   conservative quantizer and the O(1) rectangle query the evaluator uses live in formats/ (rmq_layout.h,
 //   rmq_quantization.h, rmq_query.h), which is all a renderer needs to read the asset.
-// - Not yet: point and range queries of the blend, Jacobians of the blend, the P-NDF and its sampling.
+// - Point query of the infinite microstructure ([Wang20] Sec. 4.2, Eqs. 4-6, appendix A.2): target_patch_grid.h
+//   (target patches of side P / 2, example patches of side P chosen by an integer hash of the grid vertex,
+//   bilinear weights), example_bilinear.h (the example read bilinearly between texel centres, clipped at the
+//   border, with its exact derivative), blended_normal.h (GlintPointQuery: n(u) and its analytic Jacobian for
+//   the blend modes none, linear, variance and histogram, including the derivatives of the weights, of W and
+//   of the LUTs).
+// - Not yet: range queries of the blend, the P-NDF and its sampling.
 //
 // Conventions shared by every glint table (they all describe the same example; the evaluator reads them all):
 // - The example is a NormalMap (libbake/image/normal_map.h: +Y, row 0 at the top, texel (x, row)). Glints use

@@ -36,7 +36,8 @@ AssetWriter bake_mip_asset(const LoadedNormalMap& input) {
       {"width", input.map.width}, {"height", input.map.height}, {"levels", uint32_t(pyramid.levels.size())}};
   metadata["conventions"] = normal_map_conventions();
   metadata["conventions"]["levels"] =
-      "level k is ceil(W / 2^k) x ceil(H / 2^k); each texel the unnormalised mean of the finest normals it covers";
+      "level k is max(1, floor(W / 2^k)) x max(1, floor(H / 2^k)); texel i covers [i W / w_k, (i+1) W / w_k) "
+      "(likewise rows) and holds the unnormalised area-weighted mean of the finest normals over it";
   metadata["statistics"] = mip_statistics(pyramid);
   AssetWriter writer("mip", std::move(metadata));
   for (size_t k = 0; k < pyramid.levels.size(); ++k) {

@@ -1,13 +1,13 @@
 // MIP pyramids of normal maps and their bilinear/trilinear lookups (see normal_pyramid.h; level sizes and
-// coverage from formats/mip_levels.h).
+// coverage weights from formats/mip_levels.h).
 //
-// Each level is built from the previous one's *sums* over finest texels, kept in double: a parent's sum is
-// the plain sum of its children's sums, and its mean is that sum divided by the number of finest texels it
-// covers (mip_coverage along x times along y). This is the exact coverage-weighted mean of the finest
-// normals up to double rounding, whatever the sizes (odd, 1 x N), and only one double level is alive at a
-// time (a quarter of the input's texels after the first step).
+// Every level is computed from level 0 directly, in double: texel (i, j) is the separable weighted sum
+// sum_y wy (sum_x wx n(x, y)) over the finest texels its rectangle overlaps. The rectangles of a level
+// tile the image, so a level costs O(W H) whatever its size; each texel is written by one iteration in a
+// fixed order, so the result does not depend on the thread count.
 #include "libbake/image/normal_pyramid.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -37,31 +37,26 @@ NormalPyramid build_normal_pyramid(const NormalMap& map) {
   if (map.texels.size() != size_t(map.width) * map.height)
     throw Error(ExitCode::runtime_failure, "internal: normal map texel count does not match its size");
   pyramid.levels.push_back(map);
-  const uint32_t W = map.width, H = map.height;
-  // sums[k-1]: sum over the finest texels each texel of the previous level covers.
-  std::vector<Vec3> previous(map.texels.size());
-  for (size_t i = 0; i < map.texels.size(); ++i) previous[i] = map.texels[i].cast<double>();
   for (size_t k = 1; k < sizes.size(); ++k) {
-    const uint32_t pw = sizes[k - 1].width, ph = sizes[k - 1].height;
     const uint32_t w = sizes[k].width, h = sizes[k].height;
-    std::vector<Vec3> sums(size_t(w) * h);
+    const auto wx = mip_texel_weights(w, map.width), wy = mip_texel_weights(h, map.height);
     NormalMap level;
     level.width = w;
     level.height = h;
-    level.texels.resize(sums.size());
+    level.texels.resize(size_t(w) * h);
     parallel_for(0, h, [&](int64_t row) {
       const uint32_t j = uint32_t(row);
-      const double cover_y = mip_coverage(H, uint32_t(k), j);
       for (uint32_t i = 0; i < w; ++i) {
-        Vec3 s = Vec3::Zero();
-        for (uint32_t cy = 2 * j; cy < std::min(2 * j + 2, ph); ++cy)
-          for (uint32_t cx = 2 * i; cx < std::min(2 * i + 2, pw); ++cx) s += previous[size_t(cy) * pw + cx];
-        sums[size_t(j) * w + i] = s;
-        level.at(i, j) = (s / (double(mip_coverage(W, uint32_t(k), i)) * cover_y)).cast<float>();
+        Vec3 mean = Vec3::Zero();
+        for (const MipWeight& y : wy[j]) {
+          Vec3 along_x = Vec3::Zero();
+          for (const MipWeight& x : wx[i]) along_x += x.weight * texel(map, x.index, y.index);
+          mean += y.weight * along_x;
+        }
+        level.at(i, j) = mean.cast<float>();
       }
     });
     pyramid.levels.push_back(std::move(level));
-    previous = std::move(sums);
   }
   return pyramid;
 }

@@ -27,6 +27,11 @@ AssetFreshness check_asset_freshness(const PlannedAsset& planned, const std::fil
   if (asset->kind().name != recipe.kind)
     return stale("existing file is a '" + std::string(asset->kind().name) + "' asset, not '" + recipe.kind + "'");
 
+  // A new microbake may bake differently: rebuild what an older (or newer) version baked.
+  const std::string baked_by = asset->metadata()["producer"]["version"].get<std::string>();
+  if (baked_by != MICROBAKE_VERSION)
+    return stale("baked by microbake " + baked_by + ", this is " + std::string(MICROBAKE_VERSION));
+
   const nlohmann::json& inputs = asset->metadata()["inputs"];
   if (!inputs.is_array() || inputs.size() != 1 || !inputs[0].is_object())
     return stale("existing file does not record exactly one input");

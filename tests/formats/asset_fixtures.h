@@ -1,8 +1,9 @@
 // Test fixtures for the container: a small valid `mip` asset built by hand (its levels computed by brute
-// force over covered texels, independently of the baker), and readable helpers that corrupt one field of a
+// force over the area each texel covers, independently of the baker), and readable helpers that corrupt one field of a
 // valid file and, where a test wants a deeper check to fire, reseal the checksums around it.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -30,20 +31,32 @@ inline std::vector<float> unit_normals(uint32_t w, uint32_t h) {
   return n;
 }
 
-// Level k texel = mean of the finest texels it covers, by brute force.
+// Length of the overlap of [a, b) and [c, d).
+inline double overlap_length(double a, double b, double c, double d) {
+  return std::max(0.0, std::min(b, d) - std::max(a, c));
+}
+
+// Level k texel (i, j) = area-weighted mean of the finest texels over its rectangle
+// [i W / w_k, (i+1) W / w_k) x [j H / h_k, (j+1) H / h_k), by brute force: every finest texel, weighted by the
+// area of its square's overlap with the rectangle.
 inline std::vector<std::vector<float>> brute_force_pyramid(const std::vector<float>& level0, uint32_t w, uint32_t h) {
   std::vector<std::vector<float>> levels;
   auto sizes = mip_level_sizes(w, h);
   for (size_t k = 0; k < sizes.size(); ++k) {
-    std::vector<float> L(size_t(sizes[k].width) * sizes[k].height * 3);
-    for (uint32_t j = 0; j < sizes[k].height; ++j)
-      for (uint32_t i = 0; i < sizes[k].width; ++i) {
-        double s[3] = {0, 0, 0};
-        int count = 0;
-        for (uint32_t y = j << k; y < std::min<uint32_t>((j + 1) << k, h); ++y)
-          for (uint32_t x = i << k; x < std::min<uint32_t>((i + 1) << k, w); ++x, ++count)
-            for (int c = 0; c < 3; ++c) s[c] += level0[(size_t(y) * w + x) * 3 + c];
-        for (int c = 0; c < 3; ++c) L[(size_t(j) * sizes[k].width + i) * 3 + c] = float(s[c] / count);
+    const uint32_t lw = sizes[k].width, lh = sizes[k].height;
+    const double tx = double(w) / lw, ty = double(h) / lh;  // texel size in finest texels
+    std::vector<float> L(size_t(lw) * lh * 3);
+    for (uint32_t j = 0; j < lh; ++j)
+      for (uint32_t i = 0; i < lw; ++i) {
+        double s[3] = {0, 0, 0}, area = 0;
+        for (uint32_t y = 0; y < h; ++y)
+          for (uint32_t x = 0; x < w; ++x) {
+            const double a =
+                overlap_length(i * tx, (i + 1) * tx, x, x + 1.0) * overlap_length(j * ty, (j + 1) * ty, y, y + 1.0);
+            area += a;
+            for (int c = 0; c < 3; ++c) s[c] += a * level0[(size_t(y) * w + x) * 3 + c];
+          }
+        for (int c = 0; c < 3; ++c) L[(size_t(j) * lw + i) * 3 + c] = float(s[c] / area);
       }
     levels.push_back(std::move(L));
   }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 #include <set>
+#include <stdexcept>
 
 #include "formats/asset.h"
 #include "formats/validate.h"
@@ -49,6 +50,8 @@ Bytes without_last_level() {
 
 Bytes with_level_texel(size_t level, size_t texel, std::function<void(float*)> change) {
   Bytes f = test::valid_mip_bytes();
+  if ((texel + 1) * 12 > load_le<uint64_t>(&f[entry_offset(f, level) + 96]))
+    throw std::out_of_range("fixture texel outside level " + std::to_string(level));
   uint64_t off = section_data_offset(f, level) + texel * 12;
   float v[3];
   std::memcpy(v, &f[off], 12);
@@ -173,6 +176,14 @@ std::vector<CorruptCase> corrupt_cases() {
          test::replace_metadata(f, m.dump());
          return f;
        }},
+      {"ProducerNotAnObject", 2014,
+       [&] {
+         Bytes f = valid();
+         auto m = meta_text(f);
+         m["producer"] = "microbake";
+         test::replace_metadata(f, m.dump());
+         return f;
+       }},
       {"MetadataOverlapsTable", 2013,
        [&] {
          Bytes f = valid();
@@ -278,7 +289,7 @@ std::vector<CorruptCase> corrupt_cases() {
          w.add<uint8_t>("extra", {1}, std::vector<uint8_t>{7});
          return w.serialize();
        }},
-      {"MipNonFinite", 11001, [&] { return with_level_texel(2, 1, [](float* v) { v[1] = std::nanf(""); }); }},
+      {"MipNonFinite", 11001, [&] { return with_level_texel(1, 1, [](float* v) { v[1] = std::nanf(""); }); }},
       {"MipLevelMissing", 11002, [&] { return without_last_level(); }},
       {"MipLongerThanOne", 11003,
        [&] {
@@ -294,7 +305,7 @@ std::vector<CorruptCase> corrupt_cases() {
            for (int c = 0; c < 3; ++c) v[c] *= 0.9f;
          });
        }},
-      {"MipParentNotMean", 11005, [&] { return with_level_texel(1, 2, [](float* v) { v[0] *= 0.95f; }); }},
+      {"MipParentNotMean", 11005, [&] { return with_level_texel(1, 1, [](float* v) { v[0] *= 0.95f; }); }},
       {"MipBadParameters", 11006,
        [&] {
          Bytes f = valid();

@@ -2,8 +2,12 @@
 // the skip/rebuild decisions of `bake` (asset_freshness.h) against real baked files.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <regex>
 
+#include "formats/asset.h"
+#include "formats/atomic_file.h"
+#include "tests/formats/asset_fixtures.h"
 #include "formats/error.h"
 #include "libbake/scene/asset_freshness.h"
 #include "libbake/scene/bake_plan.h"
@@ -121,13 +125,29 @@ TEST_F(AssetFreshnessTest, ChangedParameterIsStale) {
   PlannedAsset a = planned_for();
   bake(a, dir / a.file_name);
   AssetRecipe changed = *a.recipe;
-  changed.parameters = {{"levels", 2}};  // the baked file records the real level count of a 24x20 map: 6
+  changed.parameters = {{"levels", 2}};  // the baked file records the real level count of a 24x20 map: 5
   a.recipe = &changed;
   const AssetFreshness f = check(a, dir / a.file_name);
   EXPECT_EQ(f.state, AssetState::stale);
   EXPECT_NE(f.reason.find("parameter 'levels' changed"), std::string::npos) << f.reason;
-  changed.parameters = {{"levels", 6}};
+  changed.parameters = {{"levels", 5}};
   EXPECT_EQ(check(a, dir / a.file_name).state, AssetState::up_to_date);
+}
+
+TEST_F(AssetFreshnessTest, AssetFromAnotherMicrobakeVersionIsStale) {
+  testing::write_bumpy_map(dir / "map.exr");
+  const PlannedAsset a = planned_for();
+  const auto file = dir / a.file_name;
+  bake(a, file);
+  std::vector<uint8_t> bytes = read_file_bytes(file);
+  nlohmann::json meta = Asset::parse(bytes, "baked").metadata();
+  meta["producer"]["version"] = "0.0.9";
+  test::replace_metadata(bytes, meta.dump());  // same length, checksums resealed
+  std::ofstream(file, std::ios::binary)
+      .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+  const AssetFreshness f = check(a, file);
+  EXPECT_EQ(f.state, AssetState::stale);
+  EXPECT_NE(f.reason.find("baked by microbake 0.0.9"), std::string::npos) << f.reason;
 }
 
 TEST_F(AssetFreshnessTest, CorruptFileIsStale) {
