@@ -24,7 +24,15 @@ class CompareCommand : public Command {
   }
 
   int run() override {
-    const Image a = load_image(options_.a), b = load_image(options_.b);
+    ImageFileInfo info_a, info_b;
+    const Image a = load_image(options_.a, &info_a), b = load_image(options_.b, &info_b);
+    // An integer file (PNG) holds display-encoded values, a float file (EXR) linear radiance: their
+    // difference would measure the tone curve, not the rendering.
+    if (info_a.is_float != info_b.is_float)
+      throw Error(ExitCode::invalid_input,
+                  "cannot compare a display-encoded integer image with a linear float image (" + info_a.pixel_format +
+                      " vs " + info_b.pixel_format + "): compare .exr with .exr or .png with .png",
+                  options_.a + " vs " + options_.b);
     ImageDifference d;
     try {
       d = compare_images(a, b);
