@@ -18,11 +18,7 @@ class MipCommand : public Command {
     add_run_options(app, options_.run);
   }
 
-  void check() override {
-    (void)options_.input.load_options();  // rejects an unknown --convention early
-    options_.output.require_extension(".mbk");
-    options_.output.check_writable();
-  }
+  void check() override { check_asset_bake(options_.input, options_.output); }
 
   int run() override {
     options_.run.apply();

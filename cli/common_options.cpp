@@ -76,4 +76,10 @@ void add_normal_map_input(CLI::App& app, NormalMapInput& input) {
       "Repair invalid texels instead of failing: NaN/Inf/zero -> (0,0,1), z < 0 -> z = 0 (recorded in metadata)");
 }
 
+void check_asset_bake(const NormalMapInput& input, const OutputOption& output) {
+  (void)input.load_options();
+  output.require_extension(".mbk");
+  output.check_writable();
+}
+
 }  // namespace mbk::cli

@@ -51,4 +51,8 @@ struct NormalMapInput {
 // The positional IN argument plus --convention and --repair-invalid.
 void add_normal_map_input(CLI::App& app, NormalMapInput& input);
 
+// The checks of every command that bakes one .mbk asset from one normal map, before any work: a known
+// --convention, an output ending in .mbk, and an output folder that exists.
+void check_asset_bake(const NormalMapInput& input, const OutputOption& output);
+
 }  // namespace mbk::cli
