@@ -61,8 +61,8 @@ std::vector<uint8_t> AssetWriter::serialize() const {
 
   std::vector<uint8_t> out(file_size, 0);
   std::copy(kMagic.begin(), kMagic.end(), out.begin());
-  store_le<uint16_t>(&out[8], major_);
-  store_le<uint16_t>(&out[10], minor_);
+  store_le<uint16_t>(&out[8], kFormatMajor);
+  store_le<uint16_t>(&out[10], kFormatMinor);
   store_le<uint32_t>(&out[12], kind_id_);
   store_le<uint64_t>(&out[16], file_size);
   store_le<uint64_t>(&out[24], meta_offset);

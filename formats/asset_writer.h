@@ -38,12 +38,6 @@ class AssetWriter {
   // Serializes and writes atomically. Throws Error(io_failure).
   void write(const std::filesystem::path& path) const;
 
-  // Test hook: the header fields a corrupt-fixture helper may want to set (e.g. a newer major).
-  void set_version_for_testing(uint16_t major, uint16_t minor) {
-    major_ = major;
-    minor_ = minor;
-  }
-
  private:
   struct PendingSection {
     SectionInfo info;
@@ -52,8 +46,6 @@ class AssetWriter {
   uint32_t kind_id_;
   nlohmann::json metadata_;
   std::vector<PendingSection> sections_;
-  uint16_t major_ = kFormatMajor;
-  uint16_t minor_ = kFormatMinor;
 };
 
 }  // namespace mbk

@@ -19,7 +19,6 @@ class AtomicFile {
 
   // Where to write before commit(): ".<stem>.partial-<pid>-<n><ext>" beside the destination.
   const std::filesystem::path& temporary_path() const { return temporary_; }
-  const std::filesystem::path& destination() const { return destination_; }
 
   // Writes bytes to the temporary path (replacing its content). Throws Error(io_failure).
   void write_all(std::span<const uint8_t> bytes);

@@ -37,14 +37,4 @@ std::string_view element_name(ElementType type) {
   return "?";
 }
 
-std::optional<ElementType> element_type_from_name(std::string_view name) {
-  for (const auto& e : kElements)
-    if (e.name == name) return e.type;
-  return std::nullopt;
-}
-
-bool is_float(ElementType type) {
-  return type == ElementType::f16 || type == ElementType::f32 || type == ElementType::f64;
-}
-
 }  // namespace mbk

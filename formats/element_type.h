@@ -2,7 +2,6 @@
 #pragma once
 
 #include <cstdint>
-#include <optional>
 #include <string_view>
 
 #include <Imath/half.h>
@@ -26,8 +25,6 @@ enum class ElementType : uint32_t {
 // Size in bytes of one element, or 0 for a code that is not an element type.
 size_t element_size(uint32_t code);
 std::string_view element_name(ElementType type);
-std::optional<ElementType> element_type_from_name(std::string_view name);
-bool is_float(ElementType type);
 
 // Maps a C++ type to its ElementType, for the typed accessors of writer and reader.
 template <typename T>

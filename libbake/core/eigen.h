@@ -8,8 +8,6 @@
 namespace mbk {
 using Vec2 = Eigen::Vector2d;
 using Vec3 = Eigen::Vector3d;
-using Vec2f = Eigen::Vector2f;
 using Vec3f = Eigen::Vector3f;
 using Mat2 = Eigen::Matrix2d;
-using Mat3 = Eigen::Matrix3d;
 }  // namespace mbk

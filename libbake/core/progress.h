@@ -25,7 +25,6 @@ class Progress {
   void advance(uint64_t units = 1);
   // Ends the current task (clears the bar line).
   void finish();
-  bool enabled() const { return enabled_; }
 
   // A Progress that never prints, for tests and library callers.
   static Progress& silent();
