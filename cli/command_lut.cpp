@@ -1,11 +1,11 @@
 // `microbake lut IN -o OUT.mbk [--size N]`: bakes the standardization LUTs of an example normal map for
 // histogram-preserving blending of glints (asset kind `lut`, libbake/glint/lut_asset.h).
-#include <chrono>
 #include <iomanip>
 #include <iostream>
 
 #include "cli/command.h"
 #include "cli/common_options.h"
+#include "cli/stage_timer.h"
 #include "formats/lut_layout.h"
 #include "libbake/glint/lut_asset.h"
 
@@ -29,18 +29,14 @@ class LutCommand : public Command {
   int run() override {
     options_.run.apply();
     Progress progress(options_.run.progress_mode());
-    using Clock = std::chrono::steady_clock;
-    const auto seconds = [](Clock::time_point a, Clock::time_point b) {
-      return std::chrono::duration<double>(b - a).count();
-    };
-    const Clock::time_point t0 = Clock::now();
+    StageTimer timer;
     const LoadedNormalMap input = load_normal_map(options_.input.path, options_.input.load_options());
-    const Clock::time_point t1 = Clock::now();
+    const double load_seconds = timer.lap();
     const BakedLut lut = bake_standardization_lut(input.map, options_.size, progress);
     const AssetWriter writer = lut_asset_writer(lut, input.record);
-    const Clock::time_point t2 = Clock::now();
+    const double bake_seconds = timer.lap();
     options_.output.write_bytes(writer.serialize());
-    const Clock::time_point t3 = Clock::now();
+    const double write_seconds = timer.lap();
     if (!options_.run.quiet) {
       const LutChannelStatistics &x = lut.statistics[0], &y = lut.statistics[1];
       std::cout << std::setprecision(3) << "lut: wrote " << options_.output.path << " (" << input.map.width << "x"
@@ -49,8 +45,7 @@ class LutCommand : public Command {
                 << x.clipped_tail_mass << ", n_y " << y.clipped_tail_mass;
       const uint64_t repaired = input.record.repaired_texels;
       if (repaired) std::cout << "; " << repaired << " invalid texel" << (repaired == 1 ? "" : "s") << " repaired";
-      std::cout << "); load " << seconds(t0, t1) << " s, bake " << seconds(t1, t2) << " s, write " << seconds(t2, t3)
-                << " s\n";
+      std::cout << "); load " << load_seconds << " s, bake " << bake_seconds << " s, write " << write_seconds << " s\n";
     }
     return 0;
   }

@@ -2,12 +2,12 @@
 // for glint range queries (asset kind `rmq`, libbake/glint/rmq_asset.h). Its summary line reports the wall
 // time of loading, baking and writing (scripts/bench-glint-rmq.sh reads it; the asset holds no time).
 #include <bit>
-#include <chrono>
 #include <iomanip>
 #include <iostream>
 
 #include "cli/command.h"
 #include "cli/common_options.h"
+#include "cli/stage_timer.h"
 #include "formats/error.h"
 #include "formats/rmq_layout.h"
 #include "libbake/glint/rmq_asset.h"
@@ -47,11 +47,7 @@ class RmqCommand : public Command {
   int run() override {
     options_.run.apply();
     Progress progress(options_.run.progress_mode());
-    using Clock = std::chrono::steady_clock;
-    const auto seconds = [](Clock::time_point a, Clock::time_point b) {
-      return std::chrono::duration<double>(b - a).count();
-    };
-    const Clock::time_point t0 = Clock::now();
+    StageTimer timer;
     const LoadedNormalMap input = load_normal_map(options_.input.path, options_.input.load_options());
     const uint32_t w = input.map.width, h = input.map.height;
     const uint32_t patch = options_.patch ? options_.patch : rmq_default_patch(w, h);
@@ -60,11 +56,11 @@ class RmqCommand : public Command {
                   "--patch " + std::to_string(patch) + " does not fit the " + std::to_string(w) + "x" +
                       std::to_string(h) + " example (at most " + std::to_string(std::bit_floor(std::min(w, h))) + ")",
                   options_.input.path);
-    const Clock::time_point t1 = Clock::now();
+    const double load_seconds = timer.lap();
     const AssetWriter writer = bake_rmq_asset(input, patch, options_.bits, progress);
-    const Clock::time_point t2 = Clock::now();
+    const double bake_seconds = timer.lap();
     options_.output.write_bytes(writer.serialize());
-    const Clock::time_point t3 = Clock::now();
+    const double write_seconds = timer.lap();
     if (!options_.run.quiet) {
       const RmqLayout layout{w, h, patch, rmq_levels_for_patch(patch), options_.bits};
       std::cout << "rmq: wrote " << options_.output.path << " (" << w << "x" << h << ", patch " << patch
@@ -73,8 +69,8 @@ class RmqCommand : public Command {
                 << double(layout.table_bytes()) / (1024.0 * 1024.0) << " MiB";
       const uint64_t repaired = input.record.repaired_texels;
       if (repaired) std::cout << ", " << repaired << " invalid texel" << (repaired == 1 ? "" : "s") << " repaired";
-      std::cout << std::setprecision(3) << "); load " << seconds(t0, t1) << " s, bake " << seconds(t1, t2)
-                << " s, write " << seconds(t2, t3) << " s\n";
+      std::cout << std::setprecision(3) << "); load " << load_seconds << " s, bake " << bake_seconds << " s, write "
+                << write_seconds << " s\n";
     }
     return 0;
   }
