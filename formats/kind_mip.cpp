@@ -98,10 +98,7 @@ AssetKind mip_kind() {
   k.name = "mip";
   k.summary = "MIP pyramid of a normal map (unnormalised mean normals per level)";
   k.required_sections = {{"level_0", {ElementType::f32}, 3}};
-  k.knows_section = [](const std::string& name) {
-    if (name.rfind("level_", 0) != 0 || name.size() == 6) return false;
-    return name.find_first_not_of("0123456789", 6) == std::string::npos;
-  };
+  k.knows_section = is_level_section_name;
   k.check_invariants = check_mip;
   return k;
 }
