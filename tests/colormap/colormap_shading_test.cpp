@@ -12,11 +12,7 @@
 namespace mbk {
 namespace {
 
-test::TestTable table() {
-  return test::bake_test_table(
-      {0.1, 0.35, 0.5, 0.5, 0.7, 0.9},
-      {{0.1, 0.2, 0.6}, {0.3, 0.7, 0.2}, {0.6, 0.6, 0.1}, {0.9, 0.2, 0.1}, {0.8, 0.8, 0.7}, {1, 1, 1}}, 0.0, 1.0, 0.5);
-}
+test::TestTable table() { return test::banded_unit_table(); }
 
 Microsurface surface() {
   Microsurface s;

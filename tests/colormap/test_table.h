@@ -24,4 +24,11 @@ inline TestTable bake_test_table(std::vector<double> knots, std::vector<std::arr
   return t;
 }
 
+// A banded map over [0, 1] with a hard edge at 0.5 (the colour-map shading and reference tests).
+inline TestTable banded_unit_table() {
+  return bake_test_table(
+      {0.1, 0.35, 0.5, 0.5, 0.7, 0.9},
+      {{0.1, 0.2, 0.6}, {0.3, 0.7, 0.2}, {0.6, 0.6, 0.1}, {0.9, 0.2, 0.1}, {0.8, 0.8, 0.7}, {1, 1, 1}}, 0.0, 1.0, 0.5);
+}
+
 }  // namespace mbk::test
