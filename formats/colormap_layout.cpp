@@ -54,18 +54,24 @@ std::string colormap_curve_problem(const ColormapCurve& curve) {
 
 std::array<double, 3> ColormapCurve::at(double x) const { return convolved(x, 0.0); }
 
-// [Heitz13] Eq. (10) for the piecewise-linear C, term by term (colormap_layout.h).
+// [Heitz13] Eq. (10) for the piecewise-linear C, term by term (colormap_layout.h), grouped by knot position: at
+// each position p the slope changes by (slope after p) - (slope before p), one hinge, and a jump adds one step, so
+// erfc and exp run once per position rather than once per segment end.
 std::array<double, 3> ColormapCurve::convolved(double mean, double sigma) const {
-  std::array<double, 3> sum = colors.front();
-  for (size_t k = 0; k + 1 < knots.size(); ++k) {
-    const double a = knots[k], b = knots[k + 1];
-    if (b > a) {
-      const double ramp = expected_hinge(mean - a, sigma) - expected_hinge(mean - b, sigma);
-      for (int c = 0; c < 3; ++c) sum[c] += (colors[k + 1][c] - colors[k][c]) / (b - a) * ramp;
-    } else {
-      const double step = expected_step(mean - a, sigma);
-      for (int c = 0; c < 3; ++c) sum[c] += (colors[k + 1][c] - colors[k][c]) * step;
+  std::array<double, 3> sum = colors.front(), slope_before{0.0, 0.0, 0.0};
+  const size_t K = knots.size();
+  for (size_t k = 0; k < K;) {
+    const double p = knots[k];
+    const size_t right = k + 1 < K && knots[k + 1] == p ? k + 1 : k;  // the later knot of a jump
+    const double hinge = expected_hinge(mean - p, sigma);
+    const double step = right != k ? expected_step(mean - p, sigma) : 0.0;
+    for (int c = 0; c < 3; ++c) {
+      const double slope_after =
+          right + 1 < K ? (colors[right + 1][c] - colors[right][c]) / (knots[right + 1] - p) : 0.0;
+      sum[c] += (slope_after - slope_before[c]) * hinge + (colors[right][c] - colors[k][c]) * step;
+      slope_before[c] = slope_after;
     }
+    k = right + 1;
   }
   return sum;
 }

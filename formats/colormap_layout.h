@@ -20,7 +20,8 @@
 //
 // The convolution in closed form (exact for the piecewise-linear C; derivation): write C with hinge and step
 // functions, C(x) = c_0 + sum over segments k with x_{k+1} > x_k of s_k [(x - x_k)_+ - (x - x_{k+1})_+] + sum over
-// jumps (x_{k+1} == x_k) of (c_{k+1} - c_k) H(x - x_k), s_k = (c_{k+1} - c_k) / (x_{k+1} - x_k). With
+// jumps (x_{k+1} == x_k) of (c_{k+1} - c_k) H(x - x_k), s_k = (c_{k+1} - c_k) / (x_{k+1} - x_k); grouped by
+// position p, C(x) = c_0 + sum_p [(slope after p - slope before p) (x - p)_+ + jump_p H(x - p)]. With
 // X ~ N(m, sigma^2) and t = m - a:
 //   E[(X - a)_+] = t Phi(t / sigma) + sigma phi(t / sigma),     E[H(X - a)] = Phi(t / sigma),
 // and at sigma = 0 these are t_+ and [t >= 0]. Beyond |t| > 40 sigma, Phi is 0 or 1 and phi is 0 in double,
