@@ -1,7 +1,25 @@
-// What an evaluator shader does per pixel for colour-mapped textures and surfaces ([Heitz13] Secs. 4-6), as plain
-// functions over a prefiltered table (formats/colormap_layout.h), so that a renderer needs this file, the table and
-// the statistics helpers only. Conventions: directions in the local frame of the mean surface (z out, unit length);
-// colours linear RGB.
+// [Heitz13] Eric Heitz, Derek Nowrouzezahrai, Pierre Poulin, Fabrice Neyret. Filtering Color Mapped Textures and
+// Surfaces. I3D 2013. The technique's entry point: what an evaluator shader does per pixel.
+//
+// Implemented (libbake/colormap/): Sec. 4.2 (the prefiltered table of Eq. 10, colormap_table.h; footprint moments of
+// tabulated drivers, moment_pyramid.h, and of procedural noise, noise_statistics.h), Sec. 5.1 (Eqs. 2, 3, 13-18,
+// height_filtering.h), Sec. 5.2 (Eqs. 19-20 with our derivation of D_s, slope_filtering.h), Sec. 6 (below), and the
+// brute-force ground truth of each case (colormap_reference.h). Deviations, each tied to a test:
+// - The fitted constants of Eqs. (17, 18) are refit (kRefitHeightConstants): the paper's are 3x (mean) and 9x
+//   (sigma) further from the exact moments (HeightDistribution.PaperConstantsResidualAndRefit).
+// - Eq. (18) is read as the central second moment, not the raw one it prints
+//   (HeightDistribution.PaperSigmaIsTheCentralMoment_Erratum); Eq. (13)'s denominator integrand needs p_h.
+// - D_s is the exact moment match of p(s) (w_z - s . w_xy)_+, derived in slope_filtering.h (the paper's derivation
+//   is in a supplement we do not have) (SlopeFiltering.MomentsMatchBruteForce_HeadOnToGrazing).
+// - Moments of tabulated drivers are stored about the driver's mean, so the variance survives float storage
+//   (MomentPyramid.FarFromZeroDriverKeepsItsVariance_Shift).
+// - The footprint mean of noise is the best linear predictor from the centre value (noise_statistics.h); the paper
+//   only says the standard deviation is tabulated per level
+//   (NoiseStatistics.FbmFootprintMatchesSupersampledFootprints).
+//
+// Conventions: directions in the local frame of the mean surface (z out, unit length); colours linear RGB. The
+// per-pixel functions below are plain functions over a prefiltered table (formats/colormap_layout.h), so that a
+// renderer needs this file, the table and the statistics helpers only.
 //
 // Three ways to colour a pixel whose driver f has mean m and standard deviation sigma over the footprint:
 // - naive:    C(m), the colour map of the MIP-mapped driver (what is usually done; the table's sigma = 0 row);
