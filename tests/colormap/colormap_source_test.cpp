@@ -3,6 +3,7 @@
 // decreasing positions, three stops at one place, colours out of range are errors naming their path).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -65,6 +66,20 @@ TEST(ColormapSource, FloatExrIsLinear_OneRow) {
   EXPECT_EQ(m.encoding, "linear");
   EXPECT_EQ(m.curve.colors[4][0], 3.5);
   EXPECT_EQ(m.curve.colors[2][1], float(2 * 0.25 * 2 / 3.0));
+}
+
+TEST(ColormapSource, NonFiniteGradientTexelIsAnError_NaN) {
+  Image im = gradient_image();
+  im.at(3, 1, 2) = std::nanf("");
+  const auto path = temp_path("nan_gradient.exr");
+  save_image(path, im);
+  try {
+    load_colormap_source(path, ColorEncoding::automatic);
+    ADD_FAILURE() << "accepted a NaN colour";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::invalid_input);
+    EXPECT_NE(e.message().find("texel (3, 1)"), std::string::npos) << e.message();
+  }
 }
 
 TEST(ColormapSource, JsonStopsWithAHardEdge) {

@@ -5,12 +5,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 
 #include "formats/asset.h"
+#include "formats/error.h"
 #include "formats/mip_levels.h"
 #include "formats/validate.h"
 #include "libbake/colormap/moment_pyramid.h"
 #include "libbake/core/parallel.h"
+#include "libbake/image/image_io.h"
 #include "tests/formats/asset_fixtures.h"
 
 namespace mbk {
@@ -109,6 +112,29 @@ TEST(MomentPyramid, TrilinearLookupBlendsMomentsNotVariances) {
   EXPECT_NEAR(m.variance, m2 - m.mean * m.mean, 1e-9);
   EXPECT_GE(m.variance, 0.5 * (a.variance + b.variance) - 1e-12);  // the spread of the means adds variance
   EXPECT_TRUE(std::isnan(sample_moments(p, uv, std::nan("")).mean));
+}
+
+TEST(MomentPyramid, DriverImageWithNaNIsAnError_NaN) {
+  Image im;
+  im.width = 4, im.height = 3, im.channels = 1;
+  im.pixels.assign(12, 0.25f);
+  im.pixels[6] = std::nanf("");
+  const auto path = std::filesystem::temp_directory_path() / "microbake_moments_nan.exr";
+  save_image(path, im);
+  try {
+    load_driver(path, 0);
+    ADD_FAILURE() << "accepted a NaN driver";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::invalid_input);
+    EXPECT_NE(e.message().find("texel (2, 1)"), std::string::npos) << e.message();
+  }
+  // A single-channel float image loads as is.
+  im.pixels[6] = 7.5f;
+  save_image(path, im);
+  const Driver d = load_driver(path, 0);
+  EXPECT_EQ(d.values[6], 7.5);
+  EXPECT_EQ(d.record["channel"], 0);
+  std::filesystem::remove(path);
 }
 
 std::vector<uint8_t> moments_bytes(const Driver& d) {
