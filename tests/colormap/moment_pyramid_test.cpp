@@ -137,6 +137,24 @@ TEST(MomentPyramid, DriverImageWithNaNIsAnError_NaN) {
   std::filesystem::remove(path);
 }
 
+TEST(MomentPyramid, ExactBoxMomentsOnARealHeightMap) {
+  const std::filesystem::path path = std::filesystem::path(MICROBAKE_REAL_DATA_DIR) / "brick_floor_height.png";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "no real data at " << path;
+  const Driver d = load_driver(path, 0);
+  const MomentPyramid p = build_moment_pyramid(d);
+  const auto sizes = mip_level_sizes(d.width, d.height);
+  // Every texel of levels 6 and up (16 x 16 texels and coarser, footprints of 64^2 finest texels and more).
+  for (size_t k = 6; k < sizes.size(); ++k)
+    for (uint32_t j = 0; j < sizes[k].height; ++j)
+      for (uint32_t i = 0; i < sizes[k].width; ++i) {
+        const auto [mean, var] = brute_force_moments(d, sizes[k].width, sizes[k].height, i, j);
+        const Vec2 uv((i + 0.5) / sizes[k].width, 1.0 - (j + 0.5) / sizes[k].height);
+        const FootprintMoments m = sample_moments(p, uv, double(k));
+        ASSERT_NEAR(m.mean, mean, 1e-6) << "level " << k;
+        ASSERT_NEAR(m.variance, var, 1e-6) << "level " << k;
+      }
+}
+
 std::vector<uint8_t> moments_bytes(const Driver& d) {
   return moments_asset_writer(build_moment_pyramid(d), d).serialize();
 }
