@@ -14,6 +14,7 @@
 #include "formats/asset_kind.h"
 #include "formats/mip_levels.h"
 #include "formats/moments_layout.h"
+#include "formats/pyramid_levels.h"
 
 namespace mbk {
 namespace {
@@ -36,30 +37,10 @@ void check_moments(const Asset& a, std::vector<Finding>& out) {
     out.push_back(make_finding(msg::moments_bad_parameters, "zero size, or levels differs from the halving rule"));
     return;
   }
-  std::vector<std::vector<float>> levels;
-  for (size_t k = 0; k < sizes.size(); ++k) {
-    const SectionInfo* s = a.find(moments_level_name(k));
-    if (!s || s->type != ElementType::f32 ||
-        s->shape != std::vector<uint64_t>{sizes[k].height, sizes[k].width, kMomentsChannels}) {
-      out.push_back(make_finding(msg::moments_level_shape, "'" + moments_level_name(k) + "' should be f32 [" +
-                                                               std::to_string(sizes[k].height) + ", " +
-                                                               std::to_string(sizes[k].width) + ", 2]"));
-      return;
-    }
-    levels.push_back(a.read<float>(moments_level_name(k)));
-  }
-  if (a.find(moments_level_name(sizes.size()))) {
-    out.push_back(make_finding(msg::moments_level_shape, "more levels than a " + std::to_string(sizes[0].width) + "x" +
-                                                             std::to_string(sizes[0].height) + " image has"));
-    return;
-  }
-  for (size_t k = 0; k < levels.size(); ++k)
-    for (size_t i = 0; i < levels[k].size(); ++i)
-      if (!std::isfinite(levels[k][i])) {
-        out.push_back(make_finding(msg::moments_non_finite, moments_level_name(k) + " element " + std::to_string(i),
-                                   {{"section", moments_level_name(k)}, {"index", i}}));
-        return;
-      }
+  const auto read =
+      read_pyramid_levels(a, sizes, kMomentsChannels, msg::moments_level_shape, msg::moments_non_finite, out);
+  if (!read) return;
+  const std::vector<std::vector<float>>& levels = *read;
   const std::vector<float>& finest = levels[0];
   double scale[2] = {0.0, 0.0};
   for (size_t i = 0; i < finest.size(); ++i) scale[i % 2] = std::max(scale[i % 2], std::abs(double(finest[i])));
@@ -90,12 +71,7 @@ void check_moments(const Asset& a, std::vector<Finding>& out) {
           return;
         }
         if (k == 0) continue;
-        double mean[2] = {0, 0};
-        for (const MipWeight& fy : wy[y])
-          for (const MipWeight& fx : wx[x]) {
-            const float* f = &finest[(size_t(fy.index) * W + fx.index) * 2];
-            for (int c = 0; c < 2; ++c) mean[c] += fy.weight * fx.weight * f[c];
-          }
+        const std::vector<double> mean = level0_mean(finest, W, kMomentsChannels, wx[x], wy[y]);
         for (int c = 0; c < 2; ++c)
           if (std::abs(mean[c] - m[c]) > kRelative * scale[c] + kAbsolute) {
             out.push_back(make_finding(msg::moments_parent_not_mean,
