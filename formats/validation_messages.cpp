@@ -71,6 +71,22 @@ std::span<const MessageInfo> all_messages() {
       rmq_bad_range,
       rmq_min_above_max,
       rmq_not_nested,
+      sh_bad_parameters,
+      sh_section_shape,
+      sh_non_finite,
+      sh_normal_not_unit,
+      sh_dc_wrong,
+      sh_coefficient_out_of_bounds,
+      sh_band1_not_mean_normal,
+      sh_bad_window,
+      vmf_bad_parameters,
+      vmf_section_shape,
+      vmf_non_finite,
+      vmf_amplitudes_not_normalised,
+      vmf_mean_too_long,
+      vmf_finest_not_single_lobe,
+      vmf_moment_not_mean_normal,
+      vmf_empty_lobe_not_zero,
   };
   return kAll;
 }
