@@ -52,8 +52,9 @@ class VmfCommand : public Command {
       ImageFileInfo info;
       material = load_image(options_.material, &info);
       if (material->channels > 4)
-        throw Error(ExitCode::invalid_input, "material image has " + std::to_string(material->channels) +
-                                                 " channels (at most 4)", options_.material);
+        throw Error(ExitCode::invalid_input,
+                    "material image has " + std::to_string(material->channels) + " channels (at most 4)",
+                    options_.material);
       material_record = {{"path", options_.material},
                          {"content_hash", file_content_hash(options_.material)},
                          {"bytes", std::filesystem::file_size(options_.material)},
@@ -64,10 +65,8 @@ class VmfCommand : public Command {
                          {"role", "material"}};
     }
     const double load_seconds = timer.lap();
-    const VmfPyramid pyramid =
-        build_vmf_pyramid(input.map, material ? &*material : nullptr, options_.bake, progress);
-    const AssetWriter writer =
-        vmf_asset_writer(input, material ? &material_record : nullptr, pyramid, options_.bake);
+    const VmfPyramid pyramid = build_vmf_pyramid(input.map, material ? &*material : nullptr, options_.bake, progress);
+    const AssetWriter writer = vmf_asset_writer(input, material ? &material_record : nullptr, pyramid, options_.bake);
     const double bake_seconds = timer.lap();
     const std::vector<uint8_t> bytes = writer.serialize();
     options_.output.write_bytes(bytes);

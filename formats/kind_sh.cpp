@@ -80,14 +80,16 @@ void check_sh(const Asset& a, std::vector<Finding>& out) {
   for (size_t i = 0; i < window.size(); ++i)
     if ((i == 0 && window[i] != 1.0f) || !(window[i] > 0.0f && window[i] <= 1.0f) ||
         (i > 0 && window[i] > window[i - 1])) {
-      out.push_back(make_finding(msg::sh_bad_window, "window[" + std::to_string(i) + "] = " + std::to_string(window[i])));
+      out.push_back(
+          make_finding(msg::sh_bad_window, "window[" + std::to_string(i) + "] = " + std::to_string(window[i])));
       return;
     }
   for (size_t t = 0; t < size_t(W) * H; ++t) {
     const float* v = &normals[3 * t];
     const double len = std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2]);
     if (std::abs(len - 1.0) > kUnitTolerance) {
-      out.push_back(make_finding(msg::sh_normal_not_unit, "normal " + std::to_string(t) + ": length " + std::to_string(len)));
+      out.push_back(
+          make_finding(msg::sh_normal_not_unit, "normal " + std::to_string(t) + ": length " + std::to_string(len)));
       return;
     }
   }
@@ -109,9 +111,9 @@ void check_sh(const Asset& a, std::vector<Finding>& out) {
             const double bound = std::sqrt((2.0 * l + 1.0) / ((m == 0 ? 4.0 : 2.0) * std::numbers::pi));
             const float v = c[l * (l + 1) + uint32_t(m + int(l)) - l];
             if (std::abs(v) > bound + tol.at(bound)) {
-              out.push_back(make_finding(msg::sh_coefficient_out_of_bounds, at + ": g_" + std::to_string(l) + "," +
-                                                                                 std::to_string(m) + " = " +
-                                                                                 std::to_string(v)));
+              out.push_back(
+                  make_finding(msg::sh_coefficient_out_of_bounds,
+                               at + ": g_" + std::to_string(l) + "," + std::to_string(m) + " = " + std::to_string(v)));
               return;
             }
           }
@@ -119,7 +121,8 @@ void check_sh(const Asset& a, std::vector<Finding>& out) {
         double mean[3] = {0, 0, 0};
         for (const MipWeight& fy : wy[y])
           for (const MipWeight& fx : wx[x])
-            for (int i = 0; i < 3; ++i) mean[i] += fy.weight * fx.weight * normals[(size_t(fy.index) * W + fx.index) * 3 + i];
+            for (int i = 0; i < 3; ++i)
+              mean[i] += fy.weight * fx.weight * normals[(size_t(fy.index) * W + fx.index) * 3 + i];
         const double expected[3] = {c1 * mean[1], c1 * mean[2], c1 * mean[0]};  // (Y1-1, Y10, Y11) ~ (y, z, x)
         for (int i = 0; i < 3; ++i)
           if (std::abs(c[1 + i] - expected[i]) > tol.at(c1)) {

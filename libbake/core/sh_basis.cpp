@@ -18,8 +18,8 @@ constexpr double kSqrt2 = std::numbers::sqrt2;
 
 ShBasisEvaluator::ShBasisEvaluator(int order) : order_(order) {
   if (order < 0 || order > kMaxShOrder)
-    throw Error(ExitCode::runtime_failure, "internal: SH order " + std::to_string(order) + " outside 0.." +
-                                               std::to_string(kMaxShOrder));
+    throw Error(ExitCode::runtime_failure,
+                "internal: SH order " + std::to_string(order) + " outside 0.." + std::to_string(kMaxShOrder));
   a_.assign(size_t(count()), 0.0);
   b_.assign(size_t(count()), 0.0);
   diagonal_.assign(size_t(order) + 1, 0.0);

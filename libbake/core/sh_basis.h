@@ -47,7 +47,7 @@ class ShBasisEvaluator {
 
  private:
   int order_;
-  std::vector<double> a_, b_;  // a_lm, b_lm at index sh_index(l, m) for m >= 0
+  std::vector<double> a_, b_;     // a_lm, b_lm at index sh_index(l, m) for m >= 0
   std::vector<double> diagonal_;  // sqrt((2m + 1) / (2m)) for m >= 1
 };
 

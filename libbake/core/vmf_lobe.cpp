@@ -13,7 +13,7 @@ namespace mbk {
 namespace {
 
 constexpr double kSeriesLimit = 0.1;  // below: the derivative's polynomial series
-constexpr double kDirectLimit = 2.0;   // below: A from the cancellation-free series; above: 1 - (1 - A)
+constexpr double kDirectLimit = 2.0;  // below: A from the cancellation-free series; above: 1 - (1 - A)
 
 // A(k) = (k cosh k - sinh k) / (k sinh k), whose numerator sum_{n>=1} 2n k^(2n+1) / (2n+1)! has only positive
 // terms (the textbook coth(k) - 1/k loses ~log10(3 / k^2) digits to cancellation below k ~ 2). Below k = 1e-8,
@@ -125,6 +125,17 @@ void vmf_band_factors(double kappa, std::span<double> out) {
     if (l <= order) ratios[size_t(l)] = rho;
   }
   for (int l = 1; l <= order; ++l) out[size_t(l)] = out[size_t(l) - 1] * ratios[size_t(l)];
+}
+
+VmfLobeShape vmf_lobe_from_premultiplied(double alpha, const Vec3& alpha_r, double kappa_max) {
+  VmfLobeShape lobe;
+  if (!(alpha > 0.0)) return lobe;
+  const Vec3 r = alpha_r / alpha;
+  const double length = r.norm();
+  lobe.alpha = alpha;
+  lobe.kappa = vmf_kappa_from_mean_length(length, kappa_max);
+  if (length > 0.0) lobe.mu = r / length;
+  return lobe;
 }
 
 }  // namespace mbk

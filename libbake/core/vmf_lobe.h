@@ -19,6 +19,8 @@
 
 #include <span>
 
+#include "libbake/core/eigen.h"
+
 namespace mbk {
 
 // A(kappa) = coth(kappa) - 1/kappa, the length of a vMF's mean vector, for kappa >= 0 (A(0) = 0).
@@ -43,5 +45,14 @@ double vmf_log_density(double kappa, double cos_angle);
 // Lambda_l(kappa) = I_{l+1/2}(kappa) / I_{1/2}(kappa) for l = 0..out.size()-1; Lambda_0 = 1; kappa = 0 gives
 // 0 for l >= 1; kappa = +inf gives 1. Relative accuracy ~1e-14 (tests compare with quadrature to 1e-10).
 void vmf_band_factors(double kappa, std::span<double> out);
+
+// A lobe as shaders use it, decoded from the premultiplied storage (alpha, alpha r) of vMF assets
+// (formats/SPEC.md "Kind 5"): kappa = A^-1(|r|) capped at kappa_max, mu = r / |r| (+z for r = 0).
+// alpha <= 0 (or NaN) is an empty lobe: alpha 0, kappa 0.
+struct VmfLobeShape {
+  double alpha = 0.0, kappa = 0.0;
+  Vec3 mu = Vec3::UnitZ();
+};
+VmfLobeShape vmf_lobe_from_premultiplied(double alpha, const Vec3& alpha_r, double kappa_max);
 
 }  // namespace mbk

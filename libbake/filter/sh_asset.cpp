@@ -61,11 +61,11 @@ AssetWriter sh_asset_writer(const LoadedNormalMap& input, const ShPyramid& pyram
     mean_length.push_back(count > 3 ? length_sum / double(texels) : 1.0);
     rounding.push_back(worst);
   }
-  metadata["statistics"] = {{"mean_normal_length_per_level", mean_length},
-                            {"max_rounding_error_per_level", rounding}};
+  metadata["statistics"] = {{"mean_normal_length_per_level", mean_length}, {"max_rounding_error_per_level", rounding}};
   AssetWriter writer("sh", std::move(metadata));
   static_assert(sizeof(Vec3f) == 3 * sizeof(float));
-  writer.add("normals", {map.height, map.width, 3}, std::span<const float>(map.texels.front().data(), map.texels.size() * 3));
+  writer.add("normals", {map.height, map.width, 3},
+             std::span<const float>(map.texels.front().data(), map.texels.size() * 3));
   for (size_t k = 0; k < pyramid.levels.size(); ++k) {
     const ShLevel& level = pyramid.levels[k];
     const std::vector<uint64_t> shape = {level.height, level.width, uint64_t(count)};

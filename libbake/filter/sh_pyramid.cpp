@@ -69,8 +69,7 @@ ShPyramid build_sh_pyramid(const NormalMap& map, int order, Progress& progress) 
   progress.start("sh (levels)", sizes.empty() ? 0 : sizes.size() - 1);
   for (size_t k = 1; k < sizes.size(); ++k) {
     const uint32_t w = sizes[k].width, h = sizes[k].height;
-    const bool from_children =
-        k >= 2 && nests(sizes[k - 1].width, w) && nests(sizes[k - 1].height, h);
+    const bool from_children = k >= 2 && nests(sizes[k - 1].width, w) && nests(sizes[k - 1].height, h);
     pyramid.levels.push_back(from_children ? level_from_children(pyramid.levels.back(), basis.count(), w, h)
                                            : level_from_normals(map, basis, w, h));
     progress.advance();

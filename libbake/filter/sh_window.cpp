@@ -10,9 +10,12 @@ namespace mbk {
 
 std::string window_name(ShWindow w) {
   switch (w) {
-    case ShWindow::none: return "none";
-    case ShWindow::hann: return "hann";
-    case ShWindow::lanczos: return "lanczos";
+    case ShWindow::none:
+      return "none";
+    case ShWindow::hann:
+      return "hann";
+    case ShWindow::lanczos:
+      return "lanczos";
   }
   return "none";
 }

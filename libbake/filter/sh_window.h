@@ -12,7 +12,7 @@ namespace mbk {
 
 enum class ShWindow { none, hann, lanczos };
 
-std::string window_name(ShWindow w);  // "none", "hann", "lanczos"
+std::string window_name(ShWindow w);             // "none", "hann", "lanczos"
 ShWindow parse_window(const std::string& name);  // Error(bad_command_line) for other names
 
 // w_l for l = 0..order, all in (0, 1] and non-increasing, w_0 = 1:

@@ -26,7 +26,8 @@ AssetWriter vmf_asset_writer(const LoadedNormalMap& input, const nlohmann::json*
   metadata["conventions"]["levels"] =
       "level k is max(1, floor(W / 2^k)) x max(1, floor(H / 2^k)); texel i covers [i W / w_k, (i+1) W / w_k) (likewise "
       "rows); level 0 holds one lobe (alpha 1, r = n) per texel, level k >= 1 an EM fit to the finest normals covered";
-  if (pyramid.feature_count) metadata["conventions"]["features"] = "per lobe alpha y, y the responsibility-weighted mean of the material image";
+  if (pyramid.feature_count)
+    metadata["conventions"]["features"] = "per lobe alpha y, y the responsibility-weighted mean of the material image";
   nlohmann::json iterations = nlohmann::json::array(), converged = nlohmann::json::array(),
                  ll = nlohmann::json::array(), empty = nlohmann::json::array();
   for (const VmfLevel& level : pyramid.levels) {

@@ -30,7 +30,8 @@ LobeTerms lobe_terms(const std::vector<VmfComponent>& mixture) {
   LobeTerms t;
   for (const VmfComponent& c : mixture) {
     const bool live = c.alpha > 0.0;
-    // log alpha + log g = log alpha + vmf_log_density(kappa, cos) = (log alpha + log_density(kappa, 0) + kappa) + kappa cos - kappa
+    // log alpha + log g = log alpha + vmf_log_density(kappa, cos) = (log alpha + log_density(kappa, 0) + kappa) + kappa
+    // cos - kappa
     t.log_scale.push_back(live ? std::log(c.alpha) + vmf_log_density(c.kappa, 1.0) - c.kappa
                                : -std::numeric_limits<double>::infinity());
     t.kappa.push_back(c.kappa);
@@ -44,9 +45,8 @@ double responsibilities(const LobeTerms& t, const Vec3& n, std::vector<double>& 
   const size_t J = t.kappa.size();
   double top = -std::numeric_limits<double>::infinity();
   for (size_t j = 0; j < J; ++j) {
-    z[j] = t.log_scale[j] == -std::numeric_limits<double>::infinity()
-               ? t.log_scale[j]
-               : t.log_scale[j] + t.kappa[j] * t.mu[j].dot(n);
+    z[j] = t.log_scale[j] == -std::numeric_limits<double>::infinity() ? t.log_scale[j]
+                                                                      : t.log_scale[j] + t.kappa[j] * t.mu[j].dot(n);
     top = std::max(top, z[j]);
   }
   double sum = 0.0;

@@ -33,10 +33,10 @@ inline constexpr double kVmfKappaMax = 1e6;
 inline constexpr double kEmptyAmplitude = 1e-9;
 
 struct VmfComponent {
-  double alpha = 0.0;        // amplitude; 0 = empty lobe
-  Vec3 r = Vec3::Zero();     // mean resultant vector: |r| = A(kappa), r / |r| = mu (before alignment)
-  double kappa = 0.0;        // A^-1(|r|), capped
-  Vec3 mu = Vec3::UnitZ();   // lobe direction (r / |r|, or the aligned direction of Eq. 7.26)
+  double alpha = 0.0;       // amplitude; 0 = empty lobe
+  Vec3 r = Vec3::Zero();    // mean resultant vector: |r| = A(kappa), r / |r| = mu (before alignment)
+  double kappa = 0.0;       // A^-1(|r|), capped
+  Vec3 mu = Vec3::UnitZ();  // lobe direction (r / |r|, or the aligned direction of Eq. 7.26)
 };
 
 struct WeightedNormal {

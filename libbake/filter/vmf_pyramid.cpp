@@ -8,6 +8,7 @@
 #include "formats/error.h"
 #include "formats/mip_levels.h"
 #include "libbake/core/parallel.h"
+#include "libbake/core/vmf_lobe.h"
 
 namespace mbk {
 namespace {
@@ -94,7 +95,8 @@ std::vector<int> assign_slots(const std::vector<VmfComponent>& mixture, const st
 std::vector<int> by_amplitude(const std::vector<VmfComponent>& mixture) {
   std::vector<int> order(mixture.size());
   for (size_t j = 0; j < order.size(); ++j) order[j] = int(j);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return mixture[size_t(a)].alpha > mixture[size_t(b)].alpha; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return mixture[size_t(a)].alpha > mixture[size_t(b)].alpha; });
   for (int& j : order)
     if (mixture[size_t(j)].alpha <= 0.0) j = -1;
   return order;
@@ -104,7 +106,8 @@ std::vector<int> by_amplitude(const std::vector<VmfComponent>& mixture) {
 void move_slots(float* texel, const std::vector<int>& source, int width) {
   const std::vector<float> before(texel, texel + source.size() * size_t(width));
   for (size_t s = 0; s < source.size(); ++s)
-    for (int f = 0; f < width; ++f) texel[s * size_t(width) + size_t(f)] = source[s] < 0 ? 0.0f : before[size_t(source[s]) * width + size_t(f)];
+    for (int f = 0; f < width; ++f)
+      texel[s * size_t(width) + size_t(f)] = source[s] < 0 ? 0.0f : before[size_t(source[s]) * width + size_t(f)];
 }
 
 void add_targets(const VmfLevel& level, uint32_t i, uint32_t j, int J, std::vector<Vec3>& t, double kappa_max) {
@@ -131,11 +134,13 @@ VmfLevelStatistics summarise(const std::vector<EmReport>& reports, const VmfLeve
 }  // namespace
 
 VmfComponent decode_lobe(const float* stored, double kappa_max) {
+  const VmfLobeShape shape = vmf_lobe_from_premultiplied(stored[0], Vec3(stored[1], stored[2], stored[3]), kappa_max);
   VmfComponent c;
-  if (!(stored[0] > 0.0f)) return c;
-  c.alpha = stored[0];
+  if (shape.alpha <= 0.0) return c;
+  c.alpha = shape.alpha;
   c.r = Vec3(stored[1], stored[2], stored[3]) / c.alpha;
-  set_lobe_from_resultant(c, kappa_max);
+  c.kappa = shape.kappa;
+  c.mu = shape.mu;
   return c;
 }
 

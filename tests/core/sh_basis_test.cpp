@@ -144,8 +144,8 @@ TEST(ShBasis, AdditionTheoremToOrder128) {
 TEST(ShBasis, FiniteAndExactAtPolesAndEquatorToOrder128) {
   constexpr int L = 128;
   const ShBasisEvaluator basis(L);
-  for (const Vec3& d : {Vec3(0, 0, 1), Vec3(0, 0, -1), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(-1, 0, 0),
-                        Vec3(1e-300, 0, 1), Vec3(1e-9, -1e-9, -1).normalized()}) {
+  for (const Vec3& d : {Vec3(0, 0, 1), Vec3(0, 0, -1), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(-1, 0, 0), Vec3(1e-300, 0, 1),
+                        Vec3(1e-9, -1e-9, -1).normalized()}) {
     const auto y = basis.evaluate(d);
     for (int l = 0; l <= L; ++l)
       for (int m = -l; m <= l; ++m) {

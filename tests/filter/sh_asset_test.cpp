@@ -55,13 +55,12 @@ TEST_P(ShAssetCases, PassesValidationAndStoresThePyramid) {
   for (size_t l = 0; l < window.size(); ++l) EXPECT_EQ(window[l], float(factors[l]));
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    SizesPrecisionsWindows, ShAssetCases,
-    ::testing::Values(ShAssetCase{16, 16, 8, ShPrecision::f16, ShWindow::none},
-                      ShAssetCase{7, 5, 3, ShPrecision::f32, ShWindow::hann},
-                      ShAssetCase{1, 1, 2, ShPrecision::f16, ShWindow::lanczos},
-                      ShAssetCase{9, 1, 0, ShPrecision::f32, ShWindow::none},
-                      ShAssetCase{6, 10, 32, ShPrecision::f16, ShWindow::hann}));
+INSTANTIATE_TEST_SUITE_P(SizesPrecisionsWindows, ShAssetCases,
+                         ::testing::Values(ShAssetCase{16, 16, 8, ShPrecision::f16, ShWindow::none},
+                                           ShAssetCase{7, 5, 3, ShPrecision::f32, ShWindow::hann},
+                                           ShAssetCase{1, 1, 2, ShPrecision::f16, ShWindow::lanczos},
+                                           ShAssetCase{9, 1, 0, ShPrecision::f32, ShWindow::none},
+                                           ShAssetCase{6, 10, 32, ShPrecision::f16, ShWindow::hann}));
 
 TEST(ShWindow, FactorsAreTheDocumentedFormulas) {
   const auto none = window_factors(ShWindow::none, 4), hann = window_factors(ShWindow::hann, 4),

@@ -51,7 +51,8 @@ std::vector<WeightedNormal> sample_mixture(int J, size_t n, uint64_t seed) {
   std::vector<WeightedNormal> out;
   for (int j = 0; j < J; ++j) {
     const size_t count = size_t(std::llround(double(n) * kTruth[size_t(j)].alpha / total));
-    for (size_t i = 0; i < count; ++i) out.push_back({sample_vmf(rng, kTruth[size_t(j)].mu, kTruth[size_t(j)].kappa), 0});
+    for (size_t i = 0; i < count; ++i)
+      out.push_back({sample_vmf(rng, kTruth[size_t(j)].mu, kTruth[size_t(j)].kappa), 0});
   }
   for (auto& x : out) x.w = 1.0 / double(out.size());
   return out;

@@ -80,7 +80,8 @@ TEST(VmfPyramid, CoherentSlotsAcrossTexelsAndLevels) {
   const Vec3 top0 = texel_lobes(p.levels.back(), 0, 0, 3)[0].mu;
   for (size_t k = 1; k < p.levels.size(); ++k)
     for (uint32_t y = 0; y < p.levels[k].height; ++y)
-      for (uint32_t x = 0; x < p.levels[k].width; ++x) EXPECT_LT((texel_lobes(p.levels[k], x, y, 3)[0].mu - top0).norm(), 1e-6);
+      for (uint32_t x = 0; x < p.levels[k].width; ++x)
+        EXPECT_LT((texel_lobes(p.levels[k], x, y, 3)[0].mu - top0).norm(), 1e-6);
 }
 
 TEST(VmfPyramid, SameBytesWhateverTheThreadCount) {
@@ -88,9 +89,13 @@ TEST(VmfPyramid, SameBytesWhateverTheThreadCount) {
   VmfBakeOptions options{3, {}};
   options.em.align = 0.3;
   set_thread_count(1);
-  const auto one = vmf_asset_writer(input, nullptr, build_vmf_pyramid(input.map, nullptr, options, Progress::silent()), options).serialize();
+  const auto one =
+      vmf_asset_writer(input, nullptr, build_vmf_pyramid(input.map, nullptr, options, Progress::silent()), options)
+          .serialize();
   set_thread_count(2);
-  const auto two = vmf_asset_writer(input, nullptr, build_vmf_pyramid(input.map, nullptr, options, Progress::silent()), options).serialize();
+  const auto two =
+      vmf_asset_writer(input, nullptr, build_vmf_pyramid(input.map, nullptr, options, Progress::silent()), options)
+          .serialize();
   set_thread_count(0);
   EXPECT_EQ(one, two);
 }

@@ -20,12 +20,17 @@ inline std::vector<uint8_t> valid_sh_bytes() {
   const double pi = 3.14159265358979323846, c1 = std::sqrt(3 / (4 * pi));
   // Means of the four normals: x 0.25, y 0.15, z 0.7.
   const std::vector<float> level1 = {float(0.5 / std::sqrt(pi)), float(c1 * 0.15), float(c1 * 0.7), float(c1 * 0.25)};
-  nlohmann::json meta = {
-      {"inputs", nlohmann::json::array()},
-      {"parameters",
-       {{"width", 2}, {"height", 2}, {"levels", 2}, {"order", 1}, {"coefficients", 4}, {"precision", "f32"}, {"window", "none"}}},
-      {"conventions", {{"normal_convention", "+Y"}}},
-      {"statistics", nlohmann::json::object()}};
+  nlohmann::json meta = {{"inputs", nlohmann::json::array()},
+                         {"parameters",
+                          {{"width", 2},
+                           {"height", 2},
+                           {"levels", 2},
+                           {"order", 1},
+                           {"coefficients", 4},
+                           {"precision", "f32"},
+                           {"window", "none"}}},
+                         {"conventions", {{"normal_convention", "+Y"}}},
+                         {"statistics", nlohmann::json::object()}};
   AssetWriter w("sh", meta);
   w.add<float>("normals", {2, 2, 3}, normals);
   w.add<float>("level_1", {1, 1, 4}, level1);

@@ -17,7 +17,7 @@ namespace mbk::test {
 // Sections in writing order: level_0 (0), features_0 (1), level_1 (2), features_1 (3).
 inline std::vector<uint8_t> valid_vmf_bytes() {
   // Texels (0,0) and (1,0): +z with feature 0.2; (0,1) and (1,1): (0.6, 0, 0.8) with feature 0.6.
-  const std::vector<float> level0 = {1, 0, 0, 1,   0, 0, 0, 0, 1, 0, 0, 1,   0, 0, 0, 0,
+  const std::vector<float> level0 = {1, 0,    0, 1,    0, 0, 0, 0, 1, 0,    0, 1,    0, 0, 0, 0,
                                      1, 0.6f, 0, 0.8f, 0, 0, 0, 0, 1, 0.6f, 0, 0.8f, 0, 0, 0, 0};
   const std::vector<float> features0 = {0.2f, 0, 0.2f, 0, 0.6f, 0, 0.6f, 0};
   const std::vector<float> level1 = {0.5f, 0, 0, 0.5f, 0.5f, 0.3f, 0, 0.4f};
