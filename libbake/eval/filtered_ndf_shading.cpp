@@ -98,7 +98,8 @@ double toksvig_beckmann_alpha(double alpha, double mean_length) {
 
 double vmf_sh_lighting(std::span<const double> light, std::span<const double> rhat, double kappa, const Vec3& mu) {
   const int order = order_of_count(light.size());
-  if (rhat.size() < size_t(order) + 1) throw Error(ExitCode::runtime_failure, "internal: rhat shorter than the lighting order");
+  if (rhat.size() < size_t(order) + 1)
+    throw Error(ExitCode::runtime_failure, "internal: rhat shorter than the lighting order");
   const ShBasisEvaluator basis(order);
   std::vector<double> y(light.size()), lambda(size_t(order) + 1);
   basis.evaluate(mu, y);

@@ -131,6 +131,18 @@ VmfLevelStatistics summarise(const std::vector<EmReport>& reports, const VmfLeve
   return s;
 }
 
+// Texels in parallel, except on levels of fewer texels than threads could share (the top few), where each
+// texel's EM splits its own normals across the threads instead (vmf_mixture.cpp's chunked E-step; nested
+// parallel loops would run serially). Either way each texel's result is the same.
+template <typename F>
+void for_each_texel(int64_t count, F&& body) {
+  if (count >= 4 * thread_count()) {
+    parallel_for(0, count, body);
+  } else {
+    for (int64_t t = 0; t < count; ++t) body(t);
+  }
+}
+
 }  // namespace
 
 VmfComponent decode_lobe(const float* stored, double kappa_max) {
@@ -180,7 +192,7 @@ VmfPyramid build_vmf_pyramid(const NormalMap& map, const Image* features, const 
     VmfLevel level{w, h, std::vector<float>(size_t(w) * h * J * 4), {}, {}};
     if (F) level.features.assign(size_t(w) * h * J * F, 0.0f);
     std::vector<EmReport> reports(size_t(w) * h);
-    parallel_for(0, int64_t(w) * h, [&](int64_t t) {
+    for_each_texel(int64_t(w) * h, [&](int64_t t) {
       const uint32_t i = uint32_t(t % w), j = uint32_t(t / w);
       std::vector<uint32_t> xs, ys;
       for (const MipWeight& x : cx[i]) xs.push_back(x.index);
@@ -208,8 +220,8 @@ VmfPyramid build_vmf_pyramid(const NormalMap& map, const Image* features, const 
     if (refit) reports.resize(size_t(w) * h);
     for (uint32_t d = 0; d + 1 < w + h; ++d) {
       const uint32_t first = d >= h ? d - h + 1 : 0, last = std::min(d, w - 1);
-      parallel_for(first, int64_t(last) + 1, [&](int64_t x) {
-        const uint32_t i = uint32_t(x), j = d - i;
+      for_each_texel(int64_t(last) + 1 - first, [&](int64_t offset) {
+        const uint32_t i = first + uint32_t(offset), j = d - i;
         const std::vector<VmfComponent> mixture = decode_texel(level, i, j, J, kappa_max);
         std::vector<Vec3> t(size_t(J), Vec3::Zero());
         if (!top) {
