@@ -14,15 +14,10 @@
 #include "formats/error.h"
 #include "formats/mip_levels.h"
 #include "libbake/core/parallel.h"
+#include "libbake/image/texture_taps.h"
 
 namespace mbk {
 namespace {
-
-// Wraps an integer texel index into [0, n).
-int64_t wrap_index(int64_t i, int64_t n) {
-  const int64_t m = i % n;
-  return m < 0 ? m + n : m;
-}
 
 Vec3 texel(const NormalMap& level, int64_t x, int64_t row) {
   return level.at(uint32_t(x), uint32_t(row)).cast<double>();
@@ -61,35 +56,24 @@ NormalPyramid build_normal_pyramid(const NormalMap& map) {
   return pyramid;
 }
 
-// Texel centres sit at integer + 0.5 in continuous texel coordinates (x right, row down), so the sample
-// point in "centre" coordinates is (u W - 0.5, (1 - v) H - 0.5). Only the fractional part of uv matters
-// (tiling); it is taken before scaling so that huge uv do not lose the texel index to rounding.
+// Texel centres and wrapping: libbake/image/texture_taps.h.
 Vec3 sample_bilinear(const NormalMap& level, const Vec2& uv) {
   if (level.width == 0 || level.height == 0)
     throw Error(ExitCode::runtime_failure, "internal: sampling an empty normal map");
   if (!std::isfinite(uv.x()) || !std::isfinite(uv.y())) return Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
-  const double u = uv.x() - std::floor(uv.x());
-  const double t = (1.0 - uv.y()) - std::floor(1.0 - uv.y());  // row coordinate as a fraction of H
-  const double fx = u * level.width - 0.5, fy = t * level.height - 0.5;
-  const double x0 = std::floor(fx), y0 = std::floor(fy);
-  const double ax = fx - x0, ay = fy - y0;
-  const int64_t W = level.width, H = level.height;
-  const int64_t xa = wrap_index(int64_t(x0), W), xb = wrap_index(int64_t(x0) + 1, W);
-  const int64_t ya = wrap_index(int64_t(y0), H), yb = wrap_index(int64_t(y0) + 1, H);
-  return (1 - ay) * ((1 - ax) * texel(level, xa, ya) + ax * texel(level, xb, ya)) +
-         ay * ((1 - ax) * texel(level, xa, yb) + ax * texel(level, xb, yb));
+  Vec3 sum = Vec3::Zero();
+  for (const TextureTap& tap : bilinear_taps(level.width, level.height, uv))
+    sum += tap.weight * texel(level, tap.x, tap.row);
+  return sum;
 }
 
 Vec3 sample_pyramid(const NormalPyramid& pyramid, const Vec2& uv, double lod) {
   if (pyramid.levels.empty()) throw Error(ExitCode::runtime_failure, "internal: sampling an empty pyramid");
   if (std::isnan(lod)) return Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
-  const double top = double(pyramid.levels.size() - 1);
-  const double l = std::clamp(lod, 0.0, top);
-  const size_t k0 = size_t(std::floor(l));
-  const double a = l - double(k0);
-  const Vec3 fine = sample_bilinear(pyramid.levels[k0], uv);
-  if (a == 0.0) return fine;
-  return (1 - a) * fine + a * sample_bilinear(pyramid.levels[k0 + 1], uv);
+  const LevelBlend b = level_blend(pyramid.levels.size(), lod);
+  const Vec3 fine = sample_bilinear(pyramid.levels[b.fine], uv);
+  if (b.t == 0.0) return fine;
+  return (1 - b.t) * fine + b.t * sample_bilinear(pyramid.levels[b.coarse], uv);
 }
 
 }  // namespace mbk

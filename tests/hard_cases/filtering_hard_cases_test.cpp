@@ -47,8 +47,9 @@ TEST(HardCases, FilteringConstantMap) {
 }
 
 TEST(HardCases, FilteringNormalsAtTheHorizon) {
-  bake_both(filled(8, 8, [](uint32_t x, uint32_t y) { return Vec3(std::cos(x + 3.0 * y), std::sin(x + 3.0 * y), 0.0); }),
-            6, 3);
+  bake_both(
+      filled(8, 8, [](uint32_t x, uint32_t y) { return Vec3(std::cos(x + 3.0 * y), std::sin(x + 3.0 * y), 0.0); }), 6,
+      3);
 }
 
 TEST(HardCases, FilteringTwoValuedVGroove) {
