@@ -13,8 +13,10 @@ namespace {
 
 void require_kind(const Asset& asset, std::string_view kind) {
   if (asset.kind().name != kind)
-    throw Error(ExitCode::invalid_input, "asset of kind '" + std::string(asset.kind().name) + "' where a '" +
-                                             std::string(kind) + "' asset is needed", asset.where());
+    throw Error(
+        ExitCode::invalid_input,
+        "asset of kind '" + std::string(asset.kind().name) + "' where a '" + std::string(kind) + "' asset is needed",
+        asset.where());
 }
 
 bool finite(const Vec2& uv, double lod) { return std::isfinite(uv.x()) && std::isfinite(uv.y()) && !std::isnan(lod); }

@@ -220,7 +220,7 @@ VmfPyramid build_vmf_pyramid(const NormalMap& map, const Image* features, const 
     if (refit) reports.resize(size_t(w) * h);
     for (uint32_t d = 0; d + 1 < w + h; ++d) {
       const uint32_t first = d >= h ? d - h + 1 : 0, last = std::min(d, w - 1);
-      for_each_texel(int64_t(last) + 1 - first, [&](int64_t offset) {
+      const auto texel_body = [&](int64_t offset) {
         const uint32_t i = first + uint32_t(offset), j = d - i;
         const std::vector<VmfComponent> mixture = decode_texel(level, i, j, J, kappa_max);
         std::vector<Vec3> t(size_t(J), Vec3::Zero());
@@ -248,7 +248,15 @@ VmfPyramid build_vmf_pyramid(const NormalMap& map, const Image* features, const 
         reports[texel] = fit_vmf_mixture(normals, permuted, options.em, t);
         store_mixture(permuted, &level.lobes[texel * J * 4]);
         if (F) store_features(permuted, lobe_features(normals, y, F, permuted), F, &level.features[texel * J * F]);
-      });
+      };
+      // Ordering alone is a few hundred operations per texel: run it serially (one parallel region per
+      // diagonal would cost more in barriers than it saves); refits are EM runs and go in parallel.
+      const int64_t count = int64_t(last) + 1 - first;
+      if (refit) {
+        for_each_texel(count, texel_body);
+      } else {
+        for (int64_t offset = 0; offset < count; ++offset) texel_body(offset);
+      }
     }
     if (refit) level.statistics = summarise(reports, level, J);
     progress.advance();
