@@ -18,7 +18,8 @@ Vec2 centre_uv(uint32_t w, uint32_t h, uint32_t x, uint32_t row) { return Vec2((
 
 Asset sh_asset(const NormalMap& map, int order) {
   const ShPyramid p = build_sh_pyramid(map, order, Progress::silent());
-  return Asset::parse(sh_asset_writer(test::loaded_map(map), p, {order, ShPrecision::f32, ShWindow::hann}).serialize(), "sh");
+  return Asset::parse(sh_asset_writer(test::loaded_map(map), p, {order, ShPrecision::f32, ShWindow::hann}).serialize(),
+                      "sh");
 }
 
 TEST(ShNdfTexture, TexelCentresAndLevelBlends) {
