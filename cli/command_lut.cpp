@@ -43,9 +43,7 @@ class LutCommand : public Command {
                 << input.map.height << ", " << options_.size << " samples per table; round trip n_x "
                 << x.round_trip_error << ", n_y " << y.round_trip_error << "; clipped tail mass n_x "
                 << x.clipped_tail_mass << ", n_y " << y.clipped_tail_mass;
-      const uint64_t repaired = input.record.repaired_texels;
-      if (repaired) std::cout << "; " << repaired << " invalid texel" << (repaired == 1 ? "" : "s") << " repaired";
-      std::cout << "); load " << load_seconds << " s, bake " << bake_seconds << " s, write " << write_seconds << " s\n";
+      print_bake_times(std::cout, input.record, load_seconds, bake_seconds, write_seconds);
     }
     return 0;
   }

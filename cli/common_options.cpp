@@ -76,6 +76,13 @@ void add_normal_map_input(CLI::App& app, NormalMapInput& input) {
       "Repair invalid texels instead of failing: NaN/Inf/zero -> (0,0,1), z < 0 -> z = 0 (recorded in metadata)");
 }
 
+void print_bake_times(std::ostream& out, const InputRecord& input, double load_seconds, double bake_seconds,
+                      double write_seconds) {
+  const uint64_t repaired = input.repaired_texels;
+  if (repaired) out << "; " << repaired << " invalid texel" << (repaired == 1 ? "" : "s") << " repaired";
+  out << "); load " << load_seconds << " s, bake " << bake_seconds << " s, write " << write_seconds << " s\n";
+}
+
 void check_asset_bake(const NormalMapInput& input, const OutputOption& output) {
   (void)input.load_options();
   output.require_extension(".mbk");

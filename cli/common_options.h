@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <ostream>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -50,6 +51,11 @@ struct NormalMapInput {
 };
 // The positional IN argument plus --convention and --repair-invalid.
 void add_normal_map_input(CLI::App& app, NormalMapInput& input);
+
+// The end of a baking command's summary line: "; N invalid texels repaired" when the loader repaired any,
+// then "); load L s, bake B s, write W s" and a newline.
+void print_bake_times(std::ostream& out, const InputRecord& input, double load_seconds, double bake_seconds,
+                      double write_seconds);
 
 // The checks of every command that bakes one .mbk asset from one normal map, before any work: a known
 // --convention, an output ending in .mbk, and an output folder that exists.

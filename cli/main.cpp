@@ -22,6 +22,8 @@ std::vector<CommandEntry> command_table() {
       {"lut", "Bake an example's standardization LUTs for histogram-preserving glints (asset kind lut)",
        make_lut_command},
       {"rmq", "Bake an example's RMQ min/max table for glint range queries (asset kind rmq)", make_rmq_command},
+      {"sh", "Bake a normal map's SH NDF pyramid for frequency-domain filtering (asset kind sh)", make_sh_command},
+      {"vmf", "Bake a normal map's vMF mixture MIP maps by spherical EM (asset kind vmf)", make_vmf_command},
       {"colormap", "Bake a colour map prefiltered with Gaussians, indexed by (mean, sigma) (asset kind colormap)",
        make_colormap_command},
       {"moments",

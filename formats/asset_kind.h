@@ -44,6 +44,8 @@ const AssetKind* find_kind(std::string_view name);
 AssetKind mip_kind();
 AssetKind lut_kind();
 AssetKind rmq_kind();
+AssetKind sh_kind();
+AssetKind vmf_kind();
 AssetKind colormap_kind();
 AssetKind moments_kind();
 

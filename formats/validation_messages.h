@@ -111,6 +111,38 @@ inline constexpr MessageInfo rmq_bad_range{13003, Severity::error, "rmq: quantiz
 inline constexpr MessageInfo rmq_min_above_max{13004, Severity::error, "rmq: an entry's min is above its max"};
 inline constexpr MessageInfo rmq_not_nested{13005, Severity::error,
                                             "rmq: an entry does not contain its four children of the level below"};
+// 14xxx: kind 4, `sh` (SH NDF pyramids)
+inline constexpr MessageInfo sh_bad_parameters{
+    14001, Severity::error, "sh: parameters missing or inconsistent (width, height, levels, order, precision, window)"};
+inline constexpr MessageInfo sh_section_shape{14002, Severity::error,
+                                              "sh: section type or shape does not match the parameters"};
+inline constexpr MessageInfo sh_non_finite{14003, Severity::error, "sh: non-finite value"};
+inline constexpr MessageInfo sh_normal_not_unit{14004, Severity::error, "sh: finest-level normal not unit length"};
+inline constexpr MessageInfo sh_dc_wrong{14005, Severity::error,
+                                         "sh: g_00 is not 1 / (2 sqrt(pi)) (the NDF does not integrate to 1)"};
+inline constexpr MessageInfo sh_coefficient_out_of_bounds{
+    14006, Severity::error, "sh: coefficient larger than the basis function's maximum (not a mean of Y_lm)"};
+inline constexpr MessageInfo sh_band1_not_mean_normal{
+    14007, Severity::error, "sh: band-1 coefficients are not sqrt(3 / (4 pi)) times the mean of the finest normals"};
+inline constexpr MessageInfo sh_bad_window{14008, Severity::error,
+                                           "sh: window factors not in (0, 1], not non-increasing, or window[0] != 1"};
+// 15xxx: kind 5, `vmf` (vMF mixture MIP maps)
+inline constexpr MessageInfo vmf_bad_parameters{
+    15001, Severity::error, "vmf: parameters missing or inconsistent (width, height, levels, lobes, kappa_max, align)"};
+inline constexpr MessageInfo vmf_section_shape{15002, Severity::error,
+                                               "vmf: section type or shape does not match the parameters"};
+inline constexpr MessageInfo vmf_non_finite{15003, Severity::error, "vmf: non-finite value"};
+inline constexpr MessageInfo vmf_amplitudes_not_normalised{
+    15004, Severity::error, "vmf: a lobe amplitude is negative or a texel's amplitudes do not sum to 1"};
+inline constexpr MessageInfo vmf_mean_too_long{15005, Severity::error,
+                                               "vmf: a lobe's mean resultant r is longer than 1 (|alpha r| > alpha)"};
+inline constexpr MessageInfo vmf_finest_not_single_lobe{
+    15006, Severity::error, "vmf: a finest-level texel is not one lobe of amplitude 1 at a unit normal"};
+inline constexpr MessageInfo vmf_moment_not_mean_normal{
+    15007, Severity::error,
+    "vmf: a texel's first moment sum_j alpha_j r_j is not the mean of the finest normals it covers (unaligned fits)"};
+inline constexpr MessageInfo vmf_empty_lobe_not_zero{15008, Severity::error,
+                                                     "vmf: an empty lobe (alpha = 0) carries a direction or features"};
 // 17xxx: kind 7, `colormap` (prefiltered colour-map tables)
 inline constexpr MessageInfo colormap_non_finite{17001, Severity::error, "colormap: non-finite value"};
 inline constexpr MessageInfo colormap_bad_parameters{

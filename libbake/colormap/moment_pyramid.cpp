@@ -10,6 +10,7 @@
 #include "formats/mip_levels.h"
 #include "formats/moments_layout.h"
 #include "libbake/image/box_pyramid.h"
+#include "libbake/image/texture_taps.h"
 #include "libbake/image/normal_map.h"
 
 namespace mbk {
@@ -78,16 +79,13 @@ FootprintMoments sample_moments(const MomentPyramid& pyramid, const Vec2& uv, do
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
   if (pyramid.levels.empty()) throw Error(ExitCode::runtime_failure, "internal: sampling an empty moment pyramid");
   if (!std::isfinite(uv.x()) || !std::isfinite(uv.y()) || std::isnan(lod)) return {nan, nan};
-  const LevelBlend b = level_blend(lod, pyramid.levels.size());
+  const LevelBlend b = level_blend(pyramid.levels.size(), lod);
   double m[2] = {0.0, 0.0};
-  for (size_t k = b.k0; k <= b.k0 + 1 && k < pyramid.levels.size(); ++k) {
-    const double level_weight = k == b.k0 ? 1.0 - b.a : b.a;
+  for (const auto& [k, level_weight] : {std::pair{b.fine, 1.0 - b.t}, std::pair{b.coarse, b.t}}) {
     if (level_weight == 0.0) continue;
     const Image& L = pyramid.levels[k];
-    const BilinearTaps t = bilinear_taps(uv, L.width, L.height);
-    for (uint32_t c = 0; c < 2; ++c)
-      m[c] += level_weight * ((1 - t.ay) * ((1 - t.ax) * L.at(t.x0, t.y0, c) + t.ax * L.at(t.x1, t.y0, c)) +
-                              t.ay * ((1 - t.ax) * L.at(t.x0, t.y1, c) + t.ax * L.at(t.x1, t.y1, c)));
+    for (const TextureTap& tap : bilinear_taps(L.width, L.height, uv))
+      for (uint32_t c = 0; c < 2; ++c) m[c] += level_weight * tap.weight * L.at(tap.x, tap.row, c);
   }
   return {pyramid.shift + m[0], std::max(0.0, m[1] - m[0] * m[0])};
 }

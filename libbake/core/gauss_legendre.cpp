@@ -9,7 +9,7 @@
 namespace mbk {
 
 std::vector<QuadratureNode> gauss_legendre_nodes(int n) {
-  if (n < 1 || n > 256) throw Error(ExitCode::runtime_failure, "internal: Gauss-Legendre order outside 1..256");
+  if (n < 1 || n > 4096) throw Error(ExitCode::runtime_failure, "internal: Gauss-Legendre order outside 1..4096");
   std::vector<QuadratureNode> nodes(static_cast<size_t>(n));
   for (int i = 0; i < n; ++i) {
     double z = std::cos(M_PI * (i + 0.75) / (n + 0.5)), derivative = 1.0;

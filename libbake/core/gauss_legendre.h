@@ -12,7 +12,7 @@ struct QuadratureNode {
   double x, w;
 };
 
-// n in 1..256; Error(runtime_failure) otherwise.
+// n in 1..4096; Error(runtime_failure) otherwise.
 std::vector<QuadratureNode> gauss_legendre_nodes(int n);
 
 // Nodes and weights of the n-point rule on each of `panels` equal panels of [a, b], in increasing x.

@@ -6,6 +6,8 @@
 #include <numbers>
 
 #include "formats/error.h"
+#include "libbake/core/sh_basis.h"
+#include "libbake/core/vmf_lobe.h"
 
 namespace mbk {
 namespace {
@@ -26,11 +28,10 @@ Vec3 band_weighted_sum(const ShCoefficients& sh, const Vec3& d, const std::array
 }  // namespace
 
 ShBasis sh_basis(const Vec3& d) {
-  const double c0 = 0.5 / std::sqrt(kPi), c1 = std::sqrt(3.0 / (4.0 * kPi)), c2 = std::sqrt(15.0 / (4.0 * kPi)),
-               c3 = std::sqrt(5.0 / (16.0 * kPi)), c4 = std::sqrt(15.0 / (16.0 * kPi));
-  const double x = d.x(), y = d.y(), z = d.z();
-  return {
-      c0, c1 * y, c1 * z, c1 * x, c2 * x * y, c2 * y * z, c3 * (3.0 * z * z - 1.0), c2 * x * z, c4 * (x * x - y * y)};
+  static const ShBasisEvaluator kOrder2(2);  // the shared basis (libbake/core/sh_basis.h), order 2
+  ShBasis y;
+  kOrder2.evaluate(d, y);
+  return y;
 }
 
 Vec3 lat_long_direction(double phi, double theta) {
@@ -76,18 +77,9 @@ Vec3 sh_irradiance(const ShCoefficients& sh, const Vec3& n) {
 }
 
 std::array<double, 3> vmf_band_factors(double kappa) {
-  double l1, l2;
-  if (kappa < 0.1) {
-    // Series of coth(k) - 1/k and of 1 - 3 (coth(k) - 1/k) / k: the closed forms cancel catastrophically
-    // as kappa -> 0 (both tend to 0 as differences of terms near 1/kappa). Absolute truncation error < 1e-12.
-    const double k2 = kappa * kappa;
-    l1 = kappa * (1.0 / 3.0 - k2 / 45.0 + 2.0 * k2 * k2 / 945.0 - k2 * k2 * k2 / 4725.0);
-    l2 = k2 * (1.0 / 15.0 - 2.0 * k2 / 315.0 + k2 * k2 / 1575.0);
-  } else {
-    l1 = 1.0 / std::tanh(kappa) - 1.0 / kappa;  // coth via tanh: no overflow of sinh/cosh at large kappa
-    l2 = 1.0 - 3.0 * l1 / kappa;
-  }
-  return {1.0, l1, l2};
+  std::array<double, 3> lambda;
+  mbk::vmf_band_factors(kappa, lambda);  // the exact Bessel ratios (libbake/core/vmf_lobe.h)
+  return lambda;
 }
 
 double specular_lobe_kappa(double alpha) { return 1.0 / (2.0 * alpha * alpha); }

@@ -2,7 +2,7 @@
 // receives an environment: Ramamoorthi & Hanrahan, "An Efficient Representation for Irradiance
 // Environment Maps", SIGGRAPH 2001.
 //
-// Basis: real, orthonormal over the sphere, no Condon-Shortley phase, index k = l (l + 1) + m, evaluated
+// Basis: libbake/core/sh_basis.h (real, orthonormal, no Condon-Shortley phase, k = l (l + 1) + m), evaluated
 // on world directions (x, y, z):
 //   Y00 = 1/(2 sqrt(pi))
 //   Y1-1 = c1 y,  Y10 = c1 z,  Y11 = c1 x                          c1 = sqrt(3 / (4 pi))

@@ -1,4 +1,4 @@
-// Box-filtered MIP pyramids and bilinear taps (see box_pyramid.h).
+// Box-filtered MIP pyramids (see box_pyramid.h).
 #include "libbake/image/box_pyramid.h"
 
 #include <algorithm>
@@ -9,15 +9,6 @@
 #include "libbake/core/parallel.h"
 
 namespace mbk {
-namespace {
-
-// Wraps an integer texel index into [0, n).
-uint32_t wrap_index(int64_t i, int64_t n) {
-  const int64_t m = i % n;
-  return uint32_t(m < 0 ? m + n : m);
-}
-
-}  // namespace
 
 std::vector<Image> build_box_pyramid(const Image& finest) {
   std::vector<Image> pyramid;
@@ -51,27 +42,6 @@ std::vector<Image> build_box_pyramid(const Image& finest) {
     pyramid.push_back(std::move(level));
   }
   return pyramid;
-}
-
-// Texel centres sit at integer + 0.5 in continuous texel coordinates (x right, row down), so the sample
-// point in "centre" coordinates is (u W - 0.5, (1 - v) H - 0.5).
-BilinearTaps bilinear_taps(const Vec2& uv, uint32_t width, uint32_t height) {
-  const double u = uv.x() - std::floor(uv.x());
-  const double t = (1.0 - uv.y()) - std::floor(1.0 - uv.y());  // row coordinate as a fraction of H
-  const double fx = u * width - 0.5, fy = t * height - 0.5;
-  const double x0 = std::floor(fx), y0 = std::floor(fy);
-  return {wrap_index(int64_t(x0), width),
-          wrap_index(int64_t(x0) + 1, width),
-          wrap_index(int64_t(y0), height),
-          wrap_index(int64_t(y0) + 1, height),
-          fx - x0,
-          fy - y0};
-}
-
-LevelBlend level_blend(double lod, size_t levels) {
-  const double l = std::clamp(lod, 0.0, double(levels - 1));
-  const size_t k0 = size_t(std::floor(l));
-  return {k0, l - double(k0)};
 }
 
 }  // namespace mbk

@@ -1,5 +1,5 @@
 // MIP pyramids of normal maps and their bilinear/trilinear lookups (see normal_pyramid.h): the generic box
-// pyramid and taps of box_pyramid.h applied to the three components.
+// pyramid (box_pyramid.h) and taps (texture_taps.h) applied to the three components.
 #include "libbake/image/normal_pyramid.h"
 
 #include <cmath>
@@ -7,6 +7,7 @@
 
 #include "formats/error.h"
 #include "libbake/image/box_pyramid.h"
+#include "libbake/image/texture_taps.h"
 
 namespace mbk {
 namespace {
@@ -38,22 +39,24 @@ NormalPyramid build_normal_pyramid(const NormalMap& map) {
   return pyramid;
 }
 
+// Texel centres and wrapping: libbake/image/texture_taps.h.
 Vec3 sample_bilinear(const NormalMap& level, const Vec2& uv) {
   if (level.width == 0 || level.height == 0)
     throw Error(ExitCode::runtime_failure, "internal: sampling an empty normal map");
   if (!std::isfinite(uv.x()) || !std::isfinite(uv.y())) return Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
-  const BilinearTaps t = bilinear_taps(uv, level.width, level.height);
-  return (1 - t.ay) * ((1 - t.ax) * texel(level, t.x0, t.y0) + t.ax * texel(level, t.x1, t.y0)) +
-         t.ay * ((1 - t.ax) * texel(level, t.x0, t.y1) + t.ax * texel(level, t.x1, t.y1));
+  Vec3 sum = Vec3::Zero();
+  for (const TextureTap& tap : bilinear_taps(level.width, level.height, uv))
+    sum += tap.weight * texel(level, tap.x, tap.row);
+  return sum;
 }
 
 Vec3 sample_pyramid(const NormalPyramid& pyramid, const Vec2& uv, double lod) {
   if (pyramid.levels.empty()) throw Error(ExitCode::runtime_failure, "internal: sampling an empty pyramid");
   if (std::isnan(lod)) return Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
-  const LevelBlend b = level_blend(lod, pyramid.levels.size());
-  const Vec3 fine = sample_bilinear(pyramid.levels[b.k0], uv);
-  if (b.a == 0.0) return fine;
-  return (1 - b.a) * fine + b.a * sample_bilinear(pyramid.levels[b.k0 + 1], uv);
+  const LevelBlend b = level_blend(pyramid.levels.size(), lod);
+  const Vec3 fine = sample_bilinear(pyramid.levels[b.fine], uv);
+  if (b.t == 0.0) return fine;
+  return (1 - b.t) * fine + b.t * sample_bilinear(pyramid.levels[b.coarse], uv);
 }
 
 }  // namespace mbk

@@ -121,6 +121,23 @@ inline void replace_metadata(std::vector<uint8_t>& f, const std::string& json) {
   reseal_header(f);
 }
 
+// `f` with element `index` of f32 section `section` set to `value`, resealed.
+inline std::vector<uint8_t> with_f32_element(std::vector<uint8_t> f, size_t section, size_t index, float value) {
+  store_le<float>(&f[section_data_offset(f, section) + 4 * index], value);
+  reseal_section(f, section);
+  return f;
+}
+
+// `f` with metadata parameters[key] replaced (no longer than before), resealed.
+inline std::vector<uint8_t> with_parameter(std::vector<uint8_t> f, const std::string& key,
+                                           const nlohmann::json& value) {
+  const uint64_t meta_off = load_le<uint64_t>(&f[24]), meta_size = load_le<uint64_t>(&f[32]);
+  nlohmann::json m = nlohmann::json::parse(std::string(f.begin() + meta_off, f.begin() + meta_off + meta_size));
+  m["parameters"][key] = value;
+  replace_metadata(f, m.dump());
+  return f;
+}
+
 inline float get_f32(const std::vector<uint8_t>& f, uint64_t off) { return load_le<float>(&f[off]); }
 inline void set_f32(std::vector<uint8_t>& f, uint64_t off, float v) { store_le<float>(&f[off], v); }
 

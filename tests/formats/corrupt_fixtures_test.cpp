@@ -16,6 +16,8 @@
 #include "tests/formats/lut_fixtures.h"
 #include "tests/formats/moments_fixtures.h"
 #include "tests/formats/rmq_fixtures.h"
+#include "tests/formats/sh_fixtures.h"
+#include "tests/formats/vmf_fixtures.h"
 
 namespace mbk {
 namespace {
@@ -331,6 +333,22 @@ std::vector<CorruptCase> corrupt_cases() {
        [] { return test::rmq_with_code(0, 4, 2, 0, [](uint16_t, uint16_t max) { return uint16_t(max + 1); }); }},
       {"RmqParentMissesAChild", 13005,
        [] { return test::rmq_with_code(1, 0, 0, 2, [](uint16_t min, uint16_t) { return uint16_t(min + 1); }); }},
+      {"ShPrecisionNotF16OrF32", 14001, [] { return test::sh_with_parameter("precision", "f64"); }},
+      {"ShLevelShapeDisagreesWithOrder", 14002, [] { return test::sh_with_parameter("order", 2); }},
+      {"ShNonFinite", 14003, [] { return test::sh_with_value(1, 2, std::nanf("")); }},
+      {"ShNormalNotUnit", 14004, [] { return test::sh_with_value(0, 2, 0.5f); }},
+      {"ShDcNotY00", 14005, [] { return test::sh_with_value(1, 0, 0.3f); }},
+      {"ShCoefficientAboveBasisMaximum", 14006, [] { return test::sh_with_value(1, 2, 0.6f); }},
+      {"ShBand1NotMeanNormal", 14007, [] { return test::sh_with_value(1, 3, 0.13f); }},  // exact: c1 0.25 = 0.1221
+      {"ShWindowAboveOne", 14008, [] { return test::sh_with_value(2, 1, 1.5f); }},
+      {"VmfZeroLobes", 15001, [] { return test::vmf_with_parameter("lobes", 0); }},
+      {"VmfFeatureShapeDisagrees", 15002, [] { return test::vmf_with_parameter("feature_channels", 2); }},
+      {"VmfNonFinite", 15003, [] { return test::vmf_with_value(2, 1, std::nanf("")); }},
+      {"VmfAmplitudesSumAboveOne", 15004, [] { return test::vmf_with_value(2, 0, 0.6f); }},
+      {"VmfMeanLongerThanOne", 15005, [] { return test::vmf_with_value(2, 3, 0.6f); }},
+      {"VmfFinestLobeNotUnit", 15006, [] { return test::vmf_with_value(0, 3, 0.9f); }},
+      {"VmfMomentNotMeanNormal", 15007, [] { return test::vmf_with_value(2, 5, 0.29f); }},  // exact: 0.3
+      {"VmfEmptyLobeWithFeature", 15008, [] { return test::vmf_with_value(1, 1, 0.5f); }},
       {"ColormapNonFinite", 17001, [] { return test::colormap_with_value(2, 7, std::nanf("")); }},
       {"ColormapSigmaMaxZero", 17002, [] { return test::colormap_with_parameter("sigma_max", 0.0); }},
       {"ColormapTableShapeDisagreesWithWidth", 17003, [] { return test::colormap_with_parameter("width", 6); }},

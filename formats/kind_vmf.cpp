@@ -1,0 +1,150 @@
+// Asset kind 5, `vmf`: vMF mixture MIP maps of a normal map ([Han07] Sec. 7.6). Sections `level_k` f32
+// [h, w, J, 4] holding (alpha, alpha r) per lobe for k = 0..K-1, and optionally `features_k` f32 [h, w, J, F]
+// (alpha y). formats/SPEC.md, "Kind 5: vmf". The checks need no EM: amplitudes are >= 0 and sum to 1 per
+// texel; |r| <= 1 (a mean of unit vectors); level 0 is one lobe (1, n) per texel; and, for unaligned fits,
+// EM's M-step makes sum_j alpha_j r_j = sum_i w_i n_i exactly, so a texel's first moment is the MIP mean of
+// the finest normals (read back from level 0).
+#include <cmath>
+
+#include "formats/asset.h"
+#include "formats/asset_kind.h"
+#include "formats/mip_levels.h"
+
+namespace mbk {
+namespace {
+
+constexpr double kSumTolerance = 1e-5, kLengthTolerance = 1e-5, kMomentTolerance = 2e-5;
+
+void check_vmf(const Asset& a, std::vector<Finding>& out) {
+  const auto& p = a.metadata()["parameters"];
+  auto has = [&](const char* key, bool is_unsigned) {
+    return p.is_object() && p.contains(key) && (is_unsigned ? p[key].is_number_unsigned() : p[key].is_number());
+  };
+  if (!has("width", true) || !has("height", true) || !has("levels", true) || !has("lobes", true) ||
+      !has("feature_channels", true) || !has("kappa_max", false) || !has("align", false)) {
+    out.push_back(make_finding(msg::vmf_bad_parameters,
+                               "width, height, levels, lobes, feature_channels, kappa_max or align missing"));
+    return;
+  }
+  const auto sizes = mip_level_sizes(p["width"].get<uint32_t>(), p["height"].get<uint32_t>());
+  const uint64_t J = p["lobes"].get<uint64_t>(), F = p["feature_channels"].get<uint64_t>();
+  const double kappa_max = p["kappa_max"].get<double>(), align = p["align"].get<double>();
+  if (sizes.empty() || J < 1 || J > 16 || F > 4 || p["levels"].get<uint64_t>() != sizes.size() || !(kappa_max > 0.0) ||
+      !(align >= 0.0)) {
+    out.push_back(make_finding(msg::vmf_bad_parameters,
+                               "zero size, lobes outside 1..16, more than 4 feature channels, "
+                               "a level count other than " +
+                                   std::to_string(sizes.size()) + ", kappa_max <= 0 or align < 0"));
+    return;
+  }
+  std::vector<std::vector<float>> levels, features;
+  for (size_t k = 0; k < sizes.size(); ++k) {
+    const std::string name = "level_" + std::to_string(k), fname = "features_" + std::to_string(k);
+    const std::vector<uint64_t> shape = {sizes[k].height, sizes[k].width, J, 4};
+    const SectionInfo* s = a.find(name);
+    if (!s || s->type != ElementType::f32 || s->shape != shape) {
+      out.push_back(make_finding(msg::vmf_section_shape, "'" + name + "' should be f32 [" + std::to_string(shape[0]) +
+                                                             ", " + std::to_string(shape[1]) + ", " +
+                                                             std::to_string(J) + ", 4]"));
+      return;
+    }
+    const SectionInfo* f = a.find(fname);
+    if (F ? (!f || f->type != ElementType::f32 || f->shape != std::vector<uint64_t>{shape[0], shape[1], J, F})
+          : f != nullptr) {
+      out.push_back(make_finding(msg::vmf_section_shape,
+                                 "'" + fname + "' should be " +
+                                     (F ? "f32 [h, w, " + std::to_string(J) + ", " + std::to_string(F) + "]"
+                                        : std::string("absent (feature_channels = 0)"))));
+      return;
+    }
+    levels.push_back(a.read<float>(name));
+    if (F) features.push_back(a.read<float>(fname));
+  }
+  if (a.find("level_" + std::to_string(sizes.size()))) {
+    out.push_back(make_finding(msg::vmf_section_shape, "more levels than the image has"));
+    return;
+  }
+  for (size_t k = 0; k < levels.size(); ++k) {
+    for (float v : levels[k])
+      if (!std::isfinite(v)) return out.push_back(make_finding(msg::vmf_non_finite, "level_" + std::to_string(k)));
+    if (F)
+      for (float v : features[k])
+        if (!std::isfinite(v)) return out.push_back(make_finding(msg::vmf_non_finite, "features_" + std::to_string(k)));
+  }
+  const uint32_t W = sizes[0].width, H = sizes[0].height;
+  for (size_t k = 0; k < levels.size(); ++k) {
+    const uint32_t w = sizes[k].width, h = sizes[k].height;
+    const auto wx = mip_texel_weights(w, W), wy = mip_texel_weights(h, H);
+    for (uint32_t y = 0; y < h; ++y)
+      for (uint32_t x = 0; x < w; ++x) {
+        const size_t texel = size_t(y) * w + x;
+        const float* lobes = &levels[k][texel * J * 4];
+        const std::string at =
+            "level_" + std::to_string(k) + " texel (" + std::to_string(x) + ", " + std::to_string(y) + ")";
+        double sum = 0.0, moment[3] = {0, 0, 0};
+        int live = 0;
+        for (uint64_t j = 0; j < J; ++j) {
+          const float* l = lobes + 4 * j;
+          const double length = std::sqrt(double(l[1]) * l[1] + double(l[2]) * l[2] + double(l[3]) * l[3]);
+          if (l[0] < 0.0f)
+            return out.push_back(make_finding(msg::vmf_amplitudes_not_normalised,
+                                              at + ": lobe " + std::to_string(j) + " alpha " + std::to_string(l[0])));
+          bool features_zero = true;
+          for (uint64_t f = 0; F && f < F; ++f)
+            features_zero = features_zero && features[k][(texel * J + j) * F + f] == 0.0f;
+          if (l[0] == 0.0f && (length != 0.0 || !features_zero))
+            return out.push_back(make_finding(msg::vmf_empty_lobe_not_zero, at + ": lobe " + std::to_string(j)));
+          if (length > l[0] * (1.0 + kLengthTolerance))
+            return out.push_back(make_finding(msg::vmf_mean_too_long, at + ": lobe " + std::to_string(j) +
+                                                                          " |alpha r| " + std::to_string(length) +
+                                                                          ", alpha " + std::to_string(l[0])));
+          sum += l[0];
+          live += l[0] > 0.0f;
+          for (int c = 0; c < 3; ++c) moment[c] += l[1 + c];
+          if (k == 0 && l[0] > 0.0f && (std::abs(l[0] - 1.0) > 1e-6 || std::abs(length - 1.0) > kLengthTolerance))
+            return out.push_back(make_finding(msg::vmf_finest_not_single_lobe, at + ": lobe " + std::to_string(j) +
+                                                                                   " alpha " + std::to_string(l[0]) +
+                                                                                   ", |r| " + std::to_string(length)));
+        }
+        if (k == 0 && live != 1)
+          return out.push_back(
+              make_finding(msg::vmf_finest_not_single_lobe, at + ": " + std::to_string(live) + " lobes"));
+        if (std::abs(sum - 1.0) > kSumTolerance)
+          return out.push_back(make_finding(msg::vmf_amplitudes_not_normalised, at + ": sum " + std::to_string(sum)));
+        if (k == 0 || align != 0.0) continue;
+        double mean[3] = {0, 0, 0};  // the MIP mean of the finest normals, read from level 0 (alpha 1, r = n)
+        for (const MipWeight& fy : wy[y])
+          for (const MipWeight& fx : wx[x]) {
+            const float* l0 = &levels[0][(size_t(fy.index) * W + fx.index) * J * 4];
+            for (uint64_t j = 0; j < J; ++j)
+              for (int c = 0; c < 3; ++c) mean[c] += fy.weight * fx.weight * l0[4 * j + 1 + c];
+          }
+        for (int c = 0; c < 3; ++c)
+          if (std::abs(moment[c] - mean[c]) > kMomentTolerance)
+            return out.push_back(make_finding(msg::vmf_moment_not_mean_normal, at + ": component " + std::to_string(c) +
+                                                                                   " " + std::to_string(moment[c]) +
+                                                                                   ", normals give " +
+                                                                                   std::to_string(mean[c])));
+      }
+  }
+}
+
+}  // namespace
+
+AssetKind vmf_kind() {
+  AssetKind k;
+  k.id = 5;
+  k.name = "vmf";
+  k.summary = "vMF mixture MIP maps of a normal map ((alpha, alpha r) per lobe per texel)";
+  k.required_sections = {{"level_0", {ElementType::f32}, 4}};
+  k.knows_section = [](const std::string& name) {
+    for (const std::string prefix : {"level_", "features_"})
+      if (name.rfind(prefix, 0) == 0 && name.size() > prefix.size())
+        return name.find_first_not_of("0123456789", prefix.size()) == std::string::npos;
+    return false;
+  };
+  k.check_invariants = check_vmf;
+  return k;
+}
+
+}  // namespace mbk

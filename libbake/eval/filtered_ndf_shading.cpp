@@ -1,0 +1,116 @@
+// Shading with filtered NDFs (see filtered_ndf_shading.h).
+#include "libbake/eval/filtered_ndf_shading.h"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+
+#include "formats/error.h"
+#include "libbake/core/gauss_legendre.h"
+
+namespace mbk {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+int order_of_count(size_t count) {
+  const int order = int(std::lround(std::sqrt(double(count)))) - 1;
+  if (order < 0 || size_t(sh_count(order)) != count)
+    throw Error(ExitCode::runtime_failure, "internal: " + std::to_string(count) + " is not an SH coefficient count");
+  return order;
+}
+
+}  // namespace
+
+std::vector<double> zonal_brdf_coefficients(const std::function<double(double)>& f, int order) {
+  std::vector<double> rhat(size_t(order) + 1, 0.0), zonal(size_t(order) + 1);
+  for (const auto& [a, b] : {std::pair{-1.0, 0.0}, std::pair{0.0, 1.0}}) {
+    const std::vector<QuadratureNode> rule = composite_gauss_legendre(a, b, 1, order + 32);
+    for (size_t i = 0; i < rule.size(); ++i) {
+      const double ft = f(rule[i].x);
+      zonal_harmonics(order, rule[i].x, zonal);
+      for (int l = 0; l <= order; ++l) rhat[size_t(l)] += 2 * kPi * rule[i].w * ft * zonal[size_t(l)];
+    }
+  }
+  for (int l = 0; l <= order; ++l) rhat[size_t(l)] *= std::sqrt(4 * kPi / (2 * l + 1));  // [Han07] Eq. (7.11)
+  return rhat;
+}
+
+double sh_filtered_brdf(const ShBasisEvaluator& basis, std::span<const double> g, std::span<const double> window,
+                        std::span<const double> rhat, const Vec3& w) {
+  const int order = basis.order();
+  if (g.size() < size_t(basis.count()) || window.size() < size_t(order) + 1 || rhat.size() < size_t(order) + 1)
+    throw Error(ExitCode::runtime_failure, "internal: SH shading inputs shorter than the order");
+  std::vector<double> y(size_t(basis.count()));
+  basis.evaluate(w, y);
+  double sum = 0.0;
+  for (int l = 0; l <= order; ++l) {
+    double band = 0.0;
+    for (int m = -l; m <= l; ++m) band += g[size_t(sh_index(l, m))] * y[size_t(sh_index(l, m))];
+    sum += window[size_t(l)] * rhat[size_t(l)] * band;  // [Han07] Eq. (7.12)
+  }
+  return sum;
+}
+
+void delta_ndf_coefficients(const ShBasisEvaluator& basis, const Vec3& n, std::span<double> g) { basis.evaluate(n, g); }
+
+double vmf_filtered_brdf(std::span<const VmfLobeShape> lobes, std::span<const double> rhat, const Vec3& w) {
+  const int order = int(rhat.size()) - 1;
+  std::vector<double> lambda(rhat.size()), zonal(rhat.size());
+  double sum = 0.0;
+  for (const VmfLobeShape& lobe : lobes) {
+    if (lobe.alpha <= 0.0) continue;
+    vmf_band_factors(lobe.kappa, lambda);
+    zonal_harmonics(order, w.dot(lobe.mu), zonal);
+    double r = 0.0;
+    // rhat_l g_l Y_l0 with g_l = Lambda_l sqrt((2l+1)/(4 pi)) the lobe's zonal coefficient ([Han07] Eq. 7.14).
+    for (int l = 0; l <= order; ++l)
+      r += rhat[size_t(l)] * lambda[size_t(l)] * std::sqrt((2 * l + 1) / (4 * kPi)) * zonal[size_t(l)];
+    sum += lobe.alpha * r;
+  }
+  return sum;
+}
+
+double vmf_filtered_blinn_phong_exponent(double s, double kappa) {
+  if (std::isinf(kappa)) return s;
+  return kappa * s / (kappa + s);  // [Han07] Eq. (7.20)
+}
+
+double blinn_phong_lobe(double s, double t) { return t <= 0.0 ? 0.0 : (s + 1) / (2 * kPi) * std::pow(t, s); }
+
+double vmf_filtered_beckmann_alpha(double alpha, double kappa) {
+  return std::sqrt(alpha * alpha + 2.0 / kappa);  // [Han07] Eq. (7.21), sigma^2 = alpha^2 / 4; 2 / inf = 0
+}
+
+double toksvig_variance(double mean_length) {
+  if (!(mean_length > 0.0)) return std::numeric_limits<double>::infinity();
+  return std::max(0.0, 1.0 - mean_length) / mean_length;  // lengths a hair above 1 (float rounding) are sharp
+}
+
+double toksvig_blinn_phong_exponent(double s, double mean_length) {
+  return s / (1.0 + s * toksvig_variance(mean_length));
+}
+
+double toksvig_beckmann_alpha(double alpha, double mean_length) {
+  return std::sqrt(alpha * alpha + 2.0 * toksvig_variance(mean_length));
+}
+
+double vmf_sh_lighting(std::span<const double> light, std::span<const double> rhat, double kappa, const Vec3& mu) {
+  const int order = order_of_count(light.size());
+  if (rhat.size() < size_t(order) + 1)
+    throw Error(ExitCode::runtime_failure, "internal: rhat shorter than the lighting order");
+  const ShBasisEvaluator basis(order);
+  std::vector<double> y(light.size()), lambda(size_t(order) + 1);
+  basis.evaluate(mu, y);
+  vmf_band_factors(kappa, lambda);
+  double sum = 0.0;
+  for (int l = 0; l <= order; ++l) {
+    double band = 0.0;
+    for (int m = -l; m <= l; ++m) band += light[size_t(sh_index(l, m))] * y[size_t(sh_index(l, m))];
+    sum += rhat[size_t(l)] * lambda[size_t(l)] * band;  // [Han07] Eqs. (7.23), (7.24)
+  }
+  return sum;
+}
+
+}  // namespace mbk

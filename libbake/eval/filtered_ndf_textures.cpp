@@ -1,0 +1,120 @@
+// Trilinear lookups in `sh` and `vmf` assets (see filtered_ndf_textures.h).
+#include "libbake/eval/filtered_ndf_textures.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "formats/error.h"
+#include "libbake/image/texture_taps.h"
+
+namespace mbk {
+namespace {
+
+void require_kind(const Asset& asset, std::string_view kind) {
+  if (asset.kind().name != kind)
+    throw Error(
+        ExitCode::invalid_input,
+        "asset of kind '" + std::string(asset.kind().name) + "' where a '" + std::string(kind) + "' asset is needed",
+        asset.where());
+}
+
+bool finite(const Vec2& uv, double lod) { return std::isfinite(uv.x()) && std::isfinite(uv.y()) && !std::isnan(lod); }
+
+}  // namespace
+
+ShNdfTexture ShNdfTexture::from_asset(const Asset& asset) {
+  require_kind(asset, "sh");
+  const auto& p = asset.metadata()["parameters"];
+  ShNdfTexture t(p["order"].get<int>());
+  t.width_ = p["width"].get<uint32_t>();
+  t.height_ = p["height"].get<uint32_t>();
+  t.normals_ = asset.read<float>("normals");
+  for (float w : asset.read<float>("window")) t.window_.push_back(w);
+  const size_t levels = p["levels"].get<size_t>();
+  for (size_t k = 1; k < levels; ++k) {
+    const SectionInfo& s = asset.section("level_" + std::to_string(k));
+    t.heights_.push_back(uint32_t(s.shape[0]));
+    t.widths_.push_back(uint32_t(s.shape[1]));
+    t.levels_.push_back(asset.read_as_float("level_" + std::to_string(k)));
+  }
+  return t;
+}
+
+void ShNdfTexture::add_level(size_t level, const Vec2& uv, double weight, std::span<double> g) const {
+  const size_t count = size_t(basis_.count());
+  if (level == 0) {
+    std::vector<double> y(count);
+    for (const TextureTap& tap : bilinear_taps(width_, height_, uv)) {
+      const float* n = &normals_[(size_t(tap.row) * width_ + tap.x) * 3];
+      basis_.evaluate(Vec3(n[0], n[1], n[2]), y);
+      for (size_t k = 0; k < count; ++k) g[k] += weight * tap.weight * y[k];
+    }
+    return;
+  }
+  const uint32_t w = widths_[level - 1], h = heights_[level - 1];
+  for (const TextureTap& tap : bilinear_taps(w, h, uv)) {
+    const float* c = &levels_[level - 1][(size_t(tap.row) * w + tap.x) * count];
+    for (size_t k = 0; k < count; ++k) g[k] += weight * tap.weight * c[k];
+  }
+}
+
+void ShNdfTexture::lookup(const Vec2& uv, double lod, std::span<double> g) const {
+  const size_t count = size_t(basis_.count());
+  if (g.size() < count) throw Error(ExitCode::runtime_failure, "internal: SH lookup span shorter than the basis");
+  if (!finite(uv, lod)) {
+    std::fill(g.begin(), g.begin() + long(count), std::numeric_limits<double>::quiet_NaN());
+    return;
+  }
+  std::fill(g.begin(), g.begin() + long(count), 0.0);
+  const LevelBlend b = level_blend(levels(), lod);
+  add_level(b.fine, uv, 1.0 - b.t, g);
+  if (b.t > 0.0) add_level(b.coarse, uv, b.t, g);
+}
+
+VmfTexture VmfTexture::from_asset(const Asset& asset) {
+  require_kind(asset, "vmf");
+  const auto& p = asset.metadata()["parameters"];
+  VmfTexture t;
+  t.lobes_ = p["lobes"].get<int>();
+  t.features_ = p["feature_channels"].get<int>();
+  t.kappa_max_ = p["kappa_max"].get<double>();
+  const size_t levels = p["levels"].get<size_t>();
+  for (size_t k = 0; k < levels; ++k) {
+    const SectionInfo& s = asset.section("level_" + std::to_string(k));
+    t.heights_.push_back(uint32_t(s.shape[0]));
+    t.widths_.push_back(uint32_t(s.shape[1]));
+    t.levels_.push_back(asset.read<float>("level_" + std::to_string(k)));
+    if (t.features_) t.feature_levels_.push_back(asset.read<float>("features_" + std::to_string(k)));
+  }
+  return t;
+}
+
+std::vector<VmfLobeShape> VmfTexture::lookup(const Vec2& uv, double lod, std::vector<double>* features) const {
+  const size_t J = size_t(lobes_), F = size_t(features_);
+  std::vector<VmfLobeShape> lobes(J);
+  if (features) features->assign(J * F, 0.0);
+  if (!finite(uv, lod)) return lobes;
+  // T(alpha), T(alpha r), T(alpha y) per slot ([Han07] Sec. 7.6.4.2).
+  std::vector<double> premultiplied(J * 4, 0.0), weighted_features(J * F, 0.0);
+  const LevelBlend b = level_blend(levels(), lod);
+  for (const auto& [level, weight] : {std::pair{b.fine, 1.0 - b.t}, std::pair{b.coarse, b.t}}) {
+    if (weight == 0.0) continue;
+    const uint32_t w = widths_[level];
+    for (const TextureTap& tap : bilinear_taps(w, heights_[level], uv)) {
+      const size_t texel = size_t(tap.row) * w + tap.x;
+      for (size_t q = 0; q < J * 4; ++q) premultiplied[q] += weight * tap.weight * levels_[level][texel * J * 4 + q];
+      for (size_t q = 0; q < J * F; ++q)
+        weighted_features[q] += weight * tap.weight * feature_levels_[level][texel * J * F + q];
+    }
+  }
+  for (size_t j = 0; j < J; ++j) {
+    const double* q = &premultiplied[4 * j];
+    lobes[j] = vmf_lobe_from_premultiplied(q[0], Vec3(q[1], q[2], q[3]), kappa_max_);  // Alg. 7.2 lines 7-10
+    if (features && lobes[j].alpha > 0.0)
+      for (size_t f = 0; f < F; ++f) (*features)[j * F + f] = weighted_features[j * F + f] / lobes[j].alpha;
+  }
+  return lobes;
+}
+
+}  // namespace mbk

@@ -1,0 +1,60 @@
+// The evaluator's view of the filtering assets ([Han07]): `sh` NDF pyramids and `vmf` mixture maps read through
+// formats/ (never a baker), looked up trilinearly with the texel-centre and wrapping rules of
+// libbake/image/texture_taps.h, at a level of detail `lod` (0 = finest).
+//
+// SH: coefficients are linear in the NDF, so a lookup is the trilinear blend of stored coefficients; at level 0
+// (stored as normals) a tap contributes Y_lm of its normal, so the bilinear blend of four finest texels is the
+// exact NDF of those four weighted deltas.
+// vMF ([Han07] Sec. 7.6.4.2, Alg. 7.2): per lobe slot, the trilinear blend of (alpha, alpha r) (and alpha y),
+// then r = T(alpha r) / T(alpha), kappa = A^-1(|r|) (capped at the asset's kappa_max) and mu = r / |r|.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "formats/asset.h"
+#include "libbake/core/sh_basis.h"
+#include "libbake/core/vmf_lobe.h"
+
+namespace mbk {
+
+class ShNdfTexture {
+ public:
+  // Error(invalid_input) when the asset is not of kind `sh`.
+  static ShNdfTexture from_asset(const Asset& asset);
+  int order() const { return basis_.order(); }
+  const std::vector<double>& window() const { return window_; }
+  size_t levels() const { return 1 + levels_.size(); }
+  // g_lm at (uv, lod) into g (size >= (order + 1)^2). NaN uv or lod give NaN coefficients.
+  void lookup(const Vec2& uv, double lod, std::span<double> g) const;
+
+ private:
+  explicit ShNdfTexture(int order) : basis_(order) {}
+  void add_level(size_t level, const Vec2& uv, double weight, std::span<double> g) const;
+  ShBasisEvaluator basis_;
+  uint32_t width_ = 0, height_ = 0;
+  std::vector<float> normals_;
+  std::vector<uint32_t> widths_, heights_;  // of levels 1..
+  std::vector<std::vector<float>> levels_;  // levels 1..: [h][w][count]
+  std::vector<double> window_;
+};
+
+class VmfTexture {
+ public:
+  // Error(invalid_input) when the asset is not of kind `vmf`.
+  static VmfTexture from_asset(const Asset& asset);
+  int lobes() const { return lobes_; }
+  int feature_count() const { return features_; }
+  size_t levels() const { return levels_.size(); }
+  // Alg. 7.2 lines 5-10: the J lobes at (uv, lod); features (when non-null) receives J * F values y_j (already
+  // divided by the interpolated alpha; 0 for an empty slot). NaN uv or lod give empty lobes.
+  std::vector<VmfLobeShape> lookup(const Vec2& uv, double lod, std::vector<double>* features = nullptr) const;
+
+ private:
+  int lobes_ = 0, features_ = 0;
+  double kappa_max_ = 0.0;
+  std::vector<uint32_t> widths_, heights_;
+  std::vector<std::vector<float>> levels_, feature_levels_;
+};
+
+}  // namespace mbk

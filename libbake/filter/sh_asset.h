@@ -1,0 +1,31 @@
+// The `sh` asset kind (formats/kind_sh.cpp, formats/SPEC.md "Kind 4: sh"): an SH NDF pyramid
+// (sh_pyramid.h, [Han07] Sec. 7.4) with its finest level stored as the unit normals.
+#pragma once
+
+#include <string>
+
+#include "formats/asset_writer.h"
+#include "libbake/filter/sh_pyramid.h"
+#include "libbake/filter/sh_window.h"
+
+namespace mbk {
+
+enum class ShPrecision { f16, f32 };
+std::string precision_name(ShPrecision p);
+ShPrecision parse_precision(const std::string& name);  // "f16" / "f32", else Error(bad_command_line)
+
+inline constexpr int kShDefaultOrder = 8;
+
+struct ShBakeOptions {
+  int order = kShDefaultOrder;
+  ShPrecision precision = ShPrecision::f16;
+  ShWindow window = ShWindow::none;
+};
+
+// Sections: `normals` f32 [H, W, 3] (level 0: g_lm = Y_lm(n)); `level_k` for k = 1..K-1, f16 or f32
+// [h_k, w_k, (order+1)^2]; `window` f32 [order + 1]. Metadata parameters {width, height, levels, order,
+// coefficients, precision, window}; statistics per level: mean length of the mean normal and the largest
+// rounding error of the stored coefficients.
+AssetWriter sh_asset_writer(const LoadedNormalMap& input, const ShPyramid& pyramid, const ShBakeOptions& options);
+
+}  // namespace mbk

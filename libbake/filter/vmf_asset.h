@@ -1,0 +1,17 @@
+// The `vmf` asset kind (formats/kind_vmf.cpp, formats/SPEC.md "Kind 5: vmf"): vMF mixture MIP maps
+// (vmf_pyramid.h, [Han07] Sec. 7.6).
+#pragma once
+
+#include "formats/asset_writer.h"
+#include "libbake/filter/vmf_pyramid.h"
+
+namespace mbk {
+
+// Sections `level_k` f32 [h_k, w_k, J, 4] (alpha, alpha r) for k = 0..K-1, and with a material image
+// `features_k` f32 [h_k, w_k, J, F] (alpha y). Metadata parameters {width, height, levels, lobes, align,
+// tolerance, max_iterations, kappa_max, feature_channels}; inputs the normal map and the material image;
+// statistics per level: mean EM iterations, converged fraction, mean log-likelihood, empty-lobe fraction.
+AssetWriter vmf_asset_writer(const LoadedNormalMap& input, const nlohmann::json* material_record,
+                             const VmfPyramid& pyramid, const VmfBakeOptions& options);
+
+}  // namespace mbk

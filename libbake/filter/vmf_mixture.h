@@ -1,0 +1,80 @@
+// Fitting mixtures of von Mises-Fisher lobes to the normals under a texel by spherical EM: [Han07] Sec. 7.6.1,
+// Alg. 7.1 (after Banerjee et al. 2005), with the coherence term of Sec. 7.6.4.2 (Eq. 7.26) and the feature
+// average of Sec. 7.6.4.1 (Eq. 7.25).
+//
+// The NDF of a texel is sum_i w_i delta(n - n_i) (w_i the area weights of formats/mip_levels.h, summing to 1).
+// The mixture is g(n) = sum_j alpha_j vMF(n; kappa_j, mu_j) (libbake/core/vmf_lobe.h). One EM iteration:
+//   E-step  z_ij = alpha_j g_j(n_i) / sum_k alpha_k g_k(n_i), in the log domain: log alpha_j + log g_j(n_i) is
+//           at most log(alpha_j kappa_j / (2 pi (1 - e^-2k))) (the exponent kappa (mu.n - 1) <= 0), and the
+//           normaliser is a log-sum-exp around the largest term, so nothing overflows for any kappa.
+//   M-step  alpha_j = sum_i w_i z_ij;  r_j = sum_i w_i z_ij n_i / alpha_j;  kappa_j = A^-1(|r_j|) by the
+//           guarded Newton solve (not Alg. 7.1 line 12's closed form, which is up to ~5% off), capped at
+//           kappa_max (|r_j| -> 1 when the lobe's normals are identical);
+//           mu_j = normalize(r_j + C sum_k alpha_jk mu_jk) (Eq. 7.26; C = 0 gives Alg. 7.1 line 13).
+// Stopping: when the weighted mean log-likelihood sum_i w_i log g(n_i) rises by less than `tolerance` (or
+// after max_iterations). EM never lowers it for C = 0; with C > 0 a fall also stops it.
+// Empty lobes: a lobe whose amplitude falls below kEmptyAmplitude is emptied (alpha = 0, r = 0) and takes no
+// further part: re-seeding it elsewhere would only duplicate a lobe when the texel has fewer distinct normals
+// than lobes (test: VmfMixture.MoreLobesThanDistinctNormals).
+// Deterministic: sums over normals run in fixed chunks whose partial sums are added in chunk order, so the
+// result is the same whatever the thread count, and large texels are split across threads.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "libbake/core/eigen.h"
+
+namespace mbk {
+
+// kappa cap: identical normals (|r| = 1) get this concentration, an angular spread of ~1e-3 rad.
+inline constexpr double kVmfKappaMax = 1e6;
+// Amplitude below which a lobe is emptied.
+inline constexpr double kEmptyAmplitude = 1e-9;
+
+struct VmfComponent {
+  double alpha = 0.0;       // amplitude; 0 = empty lobe
+  Vec3 r = Vec3::Zero();    // mean resultant vector: |r| = A(kappa), r / |r| = mu (before alignment)
+  double kappa = 0.0;       // A^-1(|r|), capped
+  Vec3 mu = Vec3::UnitZ();  // lobe direction (r / |r|, or the aligned direction of Eq. 7.26)
+};
+
+struct WeightedNormal {
+  Vec3 n;
+  double w;  // weights of a texel's normals sum to 1
+};
+
+struct EmOptions {
+  double tolerance = 1e-6;  // on the weighted mean log-likelihood (nats per normal)
+  int max_iterations = 100;
+  double kappa_max = kVmfKappaMax;
+  double align = 0.0;  // C of Eq. 7.26
+};
+
+struct EmReport {
+  int iterations = 0;
+  bool converged = false;
+  double log_likelihood = 0.0;  // weighted mean, after the last E-step
+};
+
+// Runs EM from the given start (non-empty lobes need alpha > 0 and unit mu; their kappa is used as given).
+// `align_targets` is empty or one vector per lobe: sum over neighbours of alpha_jk mu_jk (Eq. 7.26).
+// Error(runtime_failure) when no lobe is non-empty or normals is empty.
+EmReport fit_vmf_mixture(std::span<const WeightedNormal> normals, std::vector<VmfComponent>& mixture,
+                         const EmOptions& options, std::span<const Vec3> align_targets = {});
+
+// Eq. (7.25): per lobe, the responsibility-weighted mean of per-normal features (feature_count values per
+// normal, row i at features[i * feature_count]), from one E-step with the final mixture. Empty lobes get 0.
+std::vector<double> lobe_features(std::span<const WeightedNormal> normals, std::span<const float> features,
+                                  int feature_count, const std::vector<VmfComponent>& mixture);
+
+// Hochbaum-Shmoys farthest-point seeding ([Han07] Sec. 7.6.1): first the candidate of largest amplitude (the
+// first of equals), then repeatedly the one whose smallest 1 - mu.mu_s to the chosen seeds is largest, until J
+// are chosen or every remaining candidate coincides (1 - cos <= 1e-12) with a chosen one. Returns J lobes: the
+// chosen ones (their kappa and mu, amplitude 1 / count) then empty ones.
+std::vector<VmfComponent> farthest_apart_seeds(std::span<const VmfComponent> candidates, int J);
+
+// Sets kappa = A^-1(|r|) (capped) and mu = r / |r| (mu = +z for r = 0).
+void set_lobe_from_resultant(VmfComponent& lobe, double kappa_max);
+
+}  // namespace mbk

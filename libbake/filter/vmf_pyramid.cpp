@@ -1,0 +1,268 @@
+// Builds vMF mixture MIP maps (see vmf_pyramid.h).
+#include "libbake/filter/vmf_pyramid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "formats/error.h"
+#include "formats/mip_levels.h"
+#include "libbake/core/parallel.h"
+#include "libbake/core/vmf_lobe.h"
+
+namespace mbk {
+namespace {
+
+struct LevelGeometry {
+  std::vector<std::vector<MipWeight>> wx, wy;  // finest texels under each column / row
+};
+
+LevelGeometry geometry(const NormalMap& map, uint32_t w, uint32_t h) {
+  return {mip_texel_weights(w, map.width), mip_texel_weights(h, map.height)};
+}
+
+// The normals (and features) texel (i, j) covers, with their area weights.
+void gather(const NormalMap& map, const Image* features, const LevelGeometry& g, uint32_t i, uint32_t j,
+            std::vector<WeightedNormal>& normals, std::vector<float>& texel_features) {
+  normals.clear();
+  texel_features.clear();
+  for (const MipWeight& y : g.wy[j])
+    for (const MipWeight& x : g.wx[i]) {
+      normals.push_back({map.at(x.index, y.index).cast<double>(), x.weight * y.weight});
+      if (features)
+        for (uint32_t c = 0; c < features->channels; ++c) texel_features.push_back(features->at(x.index, y.index, c));
+    }
+}
+
+void store_mixture(const std::vector<VmfComponent>& mixture, float* out) {
+  for (size_t j = 0; j < mixture.size(); ++j) {
+    const VmfComponent& c = mixture[j];
+    out[4 * j] = float(c.alpha);
+    // With alignment mu differs from r / |r|: store the fitted length along the aligned direction.
+    const Vec3 r = c.alpha > 0.0 ? Vec3(c.r.norm() * c.mu) : Vec3::Zero();
+    for (int a = 0; a < 3; ++a) out[4 * j + 1 + a] = float(c.alpha * r[a]);
+  }
+}
+
+void store_features(const std::vector<VmfComponent>& mixture, const std::vector<double>& y, int F, float* out) {
+  for (size_t j = 0; j < mixture.size(); ++j)
+    for (int f = 0; f < F; ++f) out[j * F + size_t(f)] = float(mixture[j].alpha * y[j * F + size_t(f)]);
+}
+
+std::vector<VmfComponent> decode_texel(const VmfLevel& level, uint32_t i, uint32_t j, int J, double kappa_max) {
+  std::vector<VmfComponent> mixture;
+  const float* p = &level.lobes[(size_t(j) * level.width + i) * size_t(J) * 4];
+  for (int l = 0; l < J; ++l) mixture.push_back(decode_lobe(p + 4 * l, kappa_max));
+  return mixture;
+}
+
+// The seeds of a texel: the farthest-apart J among the non-empty lobes of the level k-1 texels it overlaps.
+std::vector<VmfComponent> seed_from_children(const VmfLevel& finer, const std::vector<uint32_t>& xs,
+                                             const std::vector<uint32_t>& ys, int J, double kappa_max) {
+  std::vector<VmfComponent> candidates;
+  for (uint32_t y : ys)
+    for (uint32_t x : xs)
+      for (const VmfComponent& c : decode_texel(finer, x, y, J, kappa_max))
+        if (c.alpha > 0.0) candidates.push_back(c);
+  return farthest_apart_seeds(candidates, J);
+}
+
+// The lobe (index into mixture) each slot receives: greedy on alpha_a mu_a . t_s, largest score first; -1 leaves a
+// slot empty.
+std::vector<int> assign_slots(const std::vector<VmfComponent>& mixture, const std::vector<Vec3>& t) {
+  const size_t J = mixture.size();
+  std::vector<int> source(J, -1);
+  std::vector<bool> lobe_used(J, false);
+  for (size_t round = 0; round < J; ++round) {
+    double best = -INFINITY;
+    size_t ba = J, bs = J;
+    for (size_t a = 0; a < J; ++a) {
+      if (lobe_used[a] || mixture[a].alpha <= 0.0) continue;
+      for (size_t s = 0; s < J; ++s) {
+        if (source[s] >= 0) continue;
+        const double score = mixture[a].alpha * mixture[a].mu.dot(t[s]);
+        if (score > best) best = score, ba = a, bs = s;
+      }
+    }
+    if (ba == J) break;
+    source[bs] = int(ba);
+    lobe_used[ba] = true;
+  }
+  return source;
+}
+
+// Decreasing amplitude, empty lobes last (stable: ties keep their order).
+std::vector<int> by_amplitude(const std::vector<VmfComponent>& mixture) {
+  std::vector<int> order(mixture.size());
+  for (size_t j = 0; j < order.size(); ++j) order[j] = int(j);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return mixture[size_t(a)].alpha > mixture[size_t(b)].alpha; });
+  for (int& j : order)
+    if (mixture[size_t(j)].alpha <= 0.0) j = -1;
+  return order;
+}
+
+// Moves the `width` floats of each lobe to its slot (bit-exact: nothing is re-encoded).
+void move_slots(float* texel, const std::vector<int>& source, int width) {
+  const std::vector<float> before(texel, texel + source.size() * size_t(width));
+  for (size_t s = 0; s < source.size(); ++s)
+    for (int f = 0; f < width; ++f)
+      texel[s * size_t(width) + size_t(f)] = source[s] < 0 ? 0.0f : before[size_t(source[s]) * width + size_t(f)];
+}
+
+void add_targets(const VmfLevel& level, uint32_t i, uint32_t j, int J, std::vector<Vec3>& t, double kappa_max) {
+  const auto m = decode_texel(level, i, j, J, kappa_max);
+  for (int s = 0; s < J; ++s)
+    if (m[size_t(s)].alpha > 0.0) t[size_t(s)] += m[size_t(s)].alpha * m[size_t(s)].mu;
+}
+
+VmfLevelStatistics summarise(const std::vector<EmReport>& reports, const VmfLevel& level, int J) {
+  VmfLevelStatistics s;
+  if (reports.empty()) return s;
+  double iterations = 0.0, converged = 0.0, ll = 0.0;
+  for (const EmReport& r : reports) iterations += r.iterations, converged += r.converged, ll += r.log_likelihood;
+  size_t empty = 0;
+  for (size_t l = 0; l < level.lobes.size(); l += 4) empty += level.lobes[l] <= 0.0f;
+  const double n = double(reports.size());
+  s.mean_iterations = iterations / n;
+  s.converged_fraction = converged / n;
+  s.mean_log_likelihood = ll / n;
+  s.empty_lobe_fraction = double(empty) / (n * J);
+  return s;
+}
+
+// Texels in parallel, except on levels of fewer texels than threads could share (the top few), where each
+// texel's EM splits its own normals across the threads instead (vmf_mixture.cpp's chunked E-step; nested
+// parallel loops would run serially). Either way each texel's result is the same.
+template <typename F>
+void for_each_texel(int64_t count, F&& body) {
+  if (count >= 4 * thread_count()) {
+    parallel_for(0, count, body);
+  } else {
+    for (int64_t t = 0; t < count; ++t) body(t);
+  }
+}
+
+}  // namespace
+
+VmfComponent decode_lobe(const float* stored, double kappa_max) {
+  const VmfLobeShape shape = vmf_lobe_from_premultiplied(stored[0], Vec3(stored[1], stored[2], stored[3]), kappa_max);
+  VmfComponent c;
+  if (shape.alpha <= 0.0) return c;
+  c.alpha = shape.alpha;
+  c.r = Vec3(stored[1], stored[2], stored[3]) / c.alpha;
+  c.kappa = shape.kappa;
+  c.mu = shape.mu;
+  return c;
+}
+
+VmfPyramid build_vmf_pyramid(const NormalMap& map, const Image* features, const VmfBakeOptions& options,
+                             Progress& progress) {
+  const int J = options.lobes;
+  if (J < 1 || J > kVmfMaxLobes)
+    throw Error(ExitCode::runtime_failure, "internal: " + std::to_string(J) + " vMF lobes");
+  if (features && (features->width != map.width || features->height != map.height))
+    throw Error(ExitCode::invalid_input,
+                "material image is " + std::to_string(features->width) + "x" + std::to_string(features->height) +
+                    ", the normal map " + std::to_string(map.width) + "x" + std::to_string(map.height),
+                "--material");
+  const int F = features ? int(features->channels) : 0;
+  const double kappa_max = options.em.kappa_max;
+  const auto sizes = mip_level_sizes(map.width, map.height);
+  VmfPyramid pyramid;
+  pyramid.lobes = J;
+  pyramid.feature_count = F;
+  progress.start("vmf (fit levels, then align)", 2 * sizes.size());
+  // Level 0: one lobe per texel, alpha = 1, r = n.
+  VmfLevel finest{map.width, map.height, std::vector<float>(map.texels.size() * J * 4, 0.0f), {}, {}};
+  if (F) finest.features.assign(map.texels.size() * J * F, 0.0f);
+  for (size_t t = 0; t < map.texels.size(); ++t) {
+    finest.lobes[t * J * 4] = 1.0f;
+    for (int a = 0; a < 3; ++a) finest.lobes[t * J * 4 + 1 + a] = map.texels[t][a];
+    for (int f = 0; f < F; ++f) finest.features[t * J * F + f] = features->pixels[t * F + f];
+  }
+  pyramid.levels.push_back(std::move(finest));
+  progress.advance();
+  // Fitting, finest to coarsest.
+  for (size_t k = 1; k < sizes.size(); ++k) {
+    const uint32_t w = sizes[k].width, h = sizes[k].height;
+    const VmfLevel& finer = pyramid.levels[k - 1];
+    const auto cx = mip_texel_weights(w, finer.width), cy = mip_texel_weights(h, finer.height);
+    const LevelGeometry g = geometry(map, w, h);
+    VmfLevel level{w, h, std::vector<float>(size_t(w) * h * J * 4), {}, {}};
+    if (F) level.features.assign(size_t(w) * h * J * F, 0.0f);
+    std::vector<EmReport> reports(size_t(w) * h);
+    for_each_texel(int64_t(w) * h, [&](int64_t t) {
+      const uint32_t i = uint32_t(t % w), j = uint32_t(t / w);
+      std::vector<uint32_t> xs, ys;
+      for (const MipWeight& x : cx[i]) xs.push_back(x.index);
+      for (const MipWeight& y : cy[j]) ys.push_back(y.index);
+      std::vector<VmfComponent> mixture = seed_from_children(finer, xs, ys, J, kappa_max);
+      std::vector<WeightedNormal> normals;
+      std::vector<float> y;
+      gather(map, features, g, i, j, normals, y);
+      reports[size_t(t)] = fit_vmf_mixture(normals, mixture, options.em);
+      store_mixture(mixture, &level.lobes[size_t(t) * J * 4]);
+      if (F) store_features(mixture, lobe_features(normals, y, F, mixture), F, &level.features[size_t(t) * J * F]);
+    });
+    level.statistics = summarise(reports, level, J);
+    pyramid.levels.push_back(std::move(level));
+    progress.advance();
+  }
+  // Coherence, coarsest to finest.
+  for (size_t k = sizes.size(); k-- > 0;) {
+    VmfLevel& level = pyramid.levels[k];
+    const uint32_t w = level.width, h = level.height;
+    const bool top = k + 1 == sizes.size();
+    const bool refit = options.em.align > 0.0 && k > 0 && !top;
+    const LevelGeometry g = geometry(map, w, h);
+    std::vector<EmReport> reports;
+    if (refit) reports.resize(size_t(w) * h);
+    for (uint32_t d = 0; d + 1 < w + h; ++d) {
+      const uint32_t first = d >= h ? d - h + 1 : 0, last = std::min(d, w - 1);
+      const auto texel_body = [&](int64_t offset) {
+        const uint32_t i = first + uint32_t(offset), j = d - i;
+        const std::vector<VmfComponent> mixture = decode_texel(level, i, j, J, kappa_max);
+        std::vector<Vec3> t(size_t(J), Vec3::Zero());
+        if (!top) {
+          const VmfLevel& parent = pyramid.levels[k + 1];
+          add_targets(parent, uint32_t((i + 0.5) * parent.width / w), uint32_t((j + 0.5) * parent.height / h), J, t,
+                      kappa_max);
+          if (i > 0) add_targets(level, i - 1, j, J, t, kappa_max);
+          if (j > 0) add_targets(level, i, j - 1, J, t, kappa_max);
+          if (i > 0 && j > 0) add_targets(level, i - 1, j - 1, J, t, kappa_max);
+        }
+        const std::vector<int> source = top ? by_amplitude(mixture) : assign_slots(mixture, t);
+        const size_t texel = size_t(j) * w + i;
+        if (!refit) {
+          move_slots(&level.lobes[texel * J * 4], source, 4);
+          if (F) move_slots(&level.features[texel * J * F], source, F);
+          return;
+        }
+        std::vector<VmfComponent> permuted(static_cast<size_t>(J));
+        for (int s = 0; s < J; ++s)
+          if (source[size_t(s)] >= 0) permuted[size_t(s)] = mixture[size_t(source[size_t(s)])];
+        std::vector<WeightedNormal> normals;
+        std::vector<float> y;
+        gather(map, features, g, i, j, normals, y);
+        reports[texel] = fit_vmf_mixture(normals, permuted, options.em, t);
+        store_mixture(permuted, &level.lobes[texel * J * 4]);
+        if (F) store_features(permuted, lobe_features(normals, y, F, permuted), F, &level.features[texel * J * F]);
+      };
+      // Ordering alone is a few hundred operations per texel: run it serially (one parallel region per
+      // diagonal would cost more in barriers than it saves); refits are EM runs and go in parallel.
+      const int64_t count = int64_t(last) + 1 - first;
+      if (refit) {
+        for_each_texel(count, texel_body);
+      } else {
+        for (int64_t offset = 0; offset < count; ++offset) texel_body(offset);
+      }
+    }
+    if (refit) level.statistics = summarise(reports, level, J);
+    progress.advance();
+  }
+  progress.finish();
+  return pyramid;
+}
+
+}  // namespace mbk

@@ -1,0 +1,69 @@
+// vMF mixture MIP maps: [Han07] Sec. 7.6, Alg. 7.1 per texel (libbake/filter/vmf_mixture.h), built from the
+// finest level up, then made coherent from the top down (Sec. 7.6.4.2).
+//
+// - Level 0 has one lobe per texel: alpha = 1, r = n (|r| = 1, so kappa = kappa_max), in slot 0 before the
+//   coherence pass.
+// - Level k >= 1: EM over all the finest normals the texel covers (area weights, formats/mip_levels.h),
+//   started from the farthest-apart J lobes among the non-empty lobes of the level k-1 texels it overlaps
+//   (4J for power-of-two sizes): greedy farthest-point selection (Hochbaum-Shmoys), first the largest
+//   amplitude, then repeatedly the lobe whose smallest angular distance 1 - mu.mu_s to the chosen ones is
+//   largest; lobes coinciding with a chosen one are never chosen twice, so a texel with fewer distinct
+//   directions than J starts (and stays) with fewer lobes, the rest empty.
+// - Coherence, from the top level down, texels of a level in anti-diagonal wavefronts (x + y = const, so left,
+//   up and up-left neighbours are done before a texel): the neighbour target of lobe slot j is
+//   t_j = sum over the parent texel (level k+1) and the left, up and up-left texels of alpha_j mu_j. Each
+//   texel's lobes are first permuted to the slots that best match t (greedy on alpha_a mu_a . t_b); when
+//   C > 0 (--align) the texel is then refitted with Eq. (7.26), mu_j = normalize(r_j + C t_j). The top level
+//   orders its lobes by decreasing amplitude. Deviation [Han07]: the paper builds aligned lobes top-down in
+//   scanline order; wavefronts use the same neighbours except up-right and let a level run in parallel.
+// - Storage per lobe: (alpha, alpha r), so that trilinear interpolation of the four floats is meaningful
+//   (Sec. 7.6.4.2): r~ = T(alpha r) / T(alpha), kappa~ = A^-1(|r~|) (capped), mu~ = r~ / |r~|. With C > 0 the
+//   stored r is |r| mu_aligned (the aligned direction with the fitted concentration).
+// - Optional features (Sec. 7.6.4.1, Eq. 7.25): per lobe alpha y_j with y_j the responsibility-weighted mean of
+//   the per-texel feature vectors (a colour or material image), premultiplied like r.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "libbake/core/progress.h"
+#include "libbake/filter/vmf_mixture.h"
+#include "libbake/image/image_io.h"
+#include "libbake/image/normal_map.h"
+
+namespace mbk {
+
+inline constexpr int kVmfDefaultLobes = 4;
+inline constexpr int kVmfMaxLobes = 16;
+
+struct VmfBakeOptions {
+  int lobes = kVmfDefaultLobes;
+  EmOptions em;
+};
+
+struct VmfLevelStatistics {
+  double mean_iterations = 0.0, converged_fraction = 1.0, mean_log_likelihood = 0.0;
+  double empty_lobe_fraction = 0.0;
+};
+
+struct VmfLevel {
+  uint32_t width = 0, height = 0;
+  std::vector<float> lobes;     // [height][width][J][4]: alpha, alpha r_x, alpha r_y, alpha r_z
+  std::vector<float> features;  // [height][width][J][F]: alpha y (empty without features)
+  VmfLevelStatistics statistics;
+};
+
+struct VmfPyramid {
+  int lobes = 0, feature_count = 0;
+  std::vector<VmfLevel> levels;  // levels[0] is the finest
+};
+
+// `features` is null or an image of the map's size (any channel count, 1..4). Deterministic whatever the
+// thread count. Error(invalid_input) when the feature image's size differs from the map's.
+VmfPyramid build_vmf_pyramid(const NormalMap& map, const Image* features, const VmfBakeOptions& options,
+                             Progress& progress);
+
+// Decodes a stored lobe (alpha, alpha r) into a component (kappa from |r|, capped). alpha <= 0 gives an empty one.
+VmfComponent decode_lobe(const float* stored, double kappa_max);
+
+}  // namespace mbk

@@ -1,0 +1,32 @@
+// Where a bilinear or trilinear texture lookup reads, independently of what the texels hold: the four texels
+// and weights of a bilinear lookup (texel centres at integer + 0.5, wrapping at the borders, uv in the
+// conventions of normal_map.h), and the two MIP levels and blend of a trilinear one. Every pyramid lookup
+// (normal MIP maps, SH NDF pyramids, vMF mixture maps) uses these, so all filter the same way.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+#include "libbake/core/eigen.h"
+
+namespace mbk {
+
+struct TextureTap {
+  uint32_t x, row;
+  double weight;  // the four weights sum to 1
+};
+
+// The sample point in "centre" coordinates is (u W - 0.5, (1 - v) H - 0.5); only the fractional part of uv
+// matters (tiling), taken before scaling so that huge uv keep their texel index. uv must be finite, the size
+// non-zero (callers check).
+std::array<TextureTap, 4> bilinear_taps(uint32_t width, uint32_t height, const Vec2& uv);
+
+struct LevelBlend {
+  size_t fine, coarse;  // levels to read (coarse == fine when the blend is 0)
+  double t;             // weight of the coarse level, in [0, 1)
+};
+// lod clamped to [0, levels - 1] (lod must not be NaN; levels >= 1).
+LevelBlend level_blend(size_t levels, double lod);
+
+}  // namespace mbk

@@ -1,0 +1,100 @@
+// Trilinear lookups in `sh` and `vmf` assets (libbake/eval/filtered_ndf_textures.h): a lookup at a texel's
+// centre and integer lod is that texel; level 0 of an SH pyramid interpolates Y_lm of the normals, so the
+// corner shared by a 2x2 block equals the level-1 texel above it; blends between levels are linear; vMF lookups
+// interpolate (alpha, alpha r) per slot (Alg. 7.2), not kappa and mu.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "libbake/eval/filtered_ndf_textures.h"
+#include "libbake/filter/sh_asset.h"
+#include "libbake/filter/vmf_asset.h"
+#include "tests/filter/filter_test_maps.h"
+
+namespace mbk {
+namespace {
+
+Vec2 centre_uv(uint32_t w, uint32_t h, uint32_t x, uint32_t row) { return Vec2((x + 0.5) / w, 1.0 - (row + 0.5) / h); }
+
+Asset sh_asset(const NormalMap& map, int order) {
+  const ShPyramid p = build_sh_pyramid(map, order, Progress::silent());
+  return Asset::parse(sh_asset_writer(test::loaded_map(map), p, {order, ShPrecision::f32, ShWindow::hann}).serialize(),
+                      "sh");
+}
+
+TEST(ShNdfTexture, TexelCentresAndLevelBlends) {
+  const NormalMap map = test::random_normal_map(8, 8, 21);
+  const Asset a = sh_asset(map, 4);
+  const ShNdfTexture t = ShNdfTexture::from_asset(a);
+  EXPECT_EQ(t.levels(), 4u);
+  EXPECT_EQ(t.window().size(), 5u);
+  const ShBasisEvaluator basis(4);
+  std::vector<double> g(25), g1(25), g2(25);
+  // Level 0 at a texel centre: Y_lm of its normal.
+  t.lookup(centre_uv(8, 8, 3, 5), 0.0, g);
+  const auto y = basis.evaluate(map.at(3, 5).cast<double>());
+  for (int k = 0; k < 25; ++k) EXPECT_NEAR(g[size_t(k)], y[size_t(k)], 1e-6);
+  // Level 1 at a texel centre: the stored texel, which is also level 0 looked up at the block's shared corner.
+  const std::vector<float> level1 = a.read<float>("level_1");
+  t.lookup(centre_uv(4, 4, 1, 2), 1.0, g1);
+  t.lookup(centre_uv(4, 4, 1, 2), 0.0, g2);
+  for (int k = 0; k < 25; ++k) {
+    EXPECT_NEAR(g1[size_t(k)], level1[(2 * 4 + 1) * 25 + size_t(k)], 1e-7);
+    EXPECT_NEAR(g2[size_t(k)], g1[size_t(k)], 1e-6);
+  }
+  // Between levels: linear.
+  const Vec2 uv(0.3, 0.71);
+  t.lookup(uv, 1.0, g1);
+  t.lookup(uv, 2.0, g2);
+  t.lookup(uv, 1.25, g);
+  for (int k = 0; k < 25; ++k) EXPECT_NEAR(g[size_t(k)], 0.75 * g1[size_t(k)] + 0.25 * g2[size_t(k)], 1e-12);
+  t.lookup(Vec2(NAN, 0.5), 0.0, g);
+  EXPECT_TRUE(std::isnan(g[0]));
+}
+
+TEST(VmfTexture, InterpolatesPremultipliedLobesPerSlot) {
+  // Two columns of different constant normals: level 0 holds (1, n) in slot 0 for both.
+  NormalMap map;
+  map.width = 2, map.height = 1;
+  const Vec3 a = Vec3(0.6, 0, 0.8), b = Vec3(-0.6, 0, 0.8);
+  map.texels = {a.cast<float>(), b.cast<float>()};
+  VmfBakeOptions options{2, {}};
+  const VmfPyramid p = build_vmf_pyramid(map, nullptr, options, Progress::silent());
+  const Asset asset = Asset::parse(vmf_asset_writer(test::loaded_map(map), nullptr, p, options).serialize(), "vmf");
+  const VmfTexture t = VmfTexture::from_asset(asset);
+  ASSERT_EQ(t.levels(), 2u);
+  // At texel 0's centre: the lobe (1, a), kappa at the cap.
+  auto lobes = t.lookup(centre_uv(2, 1, 0, 0), 0.0);
+  double total = 0;
+  for (const auto& l : lobes)
+    if (l.alpha > 0) {
+      total += l.alpha;
+      EXPECT_LT((l.mu - a).norm(), 1e-6);
+      EXPECT_EQ(l.kappa, 1e6);
+    }
+  EXPECT_NEAR(total, 1.0, 1e-7);
+  // Halfway between the texels at lod 0: the slot holding both lobes (same slot after the coherence pass,
+  // which matches each finest lobe to its parent's) blends alpha r: r = (a + b) / 2, a broad lobe.
+  lobes = t.lookup(Vec2(0.5, 0.5), 0.0);
+  const auto top = t.lookup(Vec2(0.5, 0.5), 1.0);
+  double alpha_sum = 0;
+  Vec3 moment = Vec3::Zero();
+  for (const auto& l : lobes) {
+    alpha_sum += l.alpha;
+    if (l.alpha > 0) moment += l.alpha * vmf_mean_length(l.kappa) * l.mu;
+  }
+  EXPECT_NEAR(alpha_sum, 1.0, 1e-7);
+  EXPECT_LT((moment - 0.5 * (a + b)).norm(), 1e-5);  // first moment preserved by the linear blend
+  int live = 0;
+  for (const auto& l : top) live += l.alpha > 0;
+  EXPECT_EQ(live, 2);  // the coarse level keeps both facets
+}
+
+TEST(FilteredNdfTextures, RefuseTheWrongKind) {
+  const NormalMap map = test::random_normal_map(4, 4, 2);
+  const Asset a = sh_asset(map, 2);
+  EXPECT_THROW(VmfTexture::from_asset(a), Error);
+}
+
+}  // namespace
+}  // namespace mbk
