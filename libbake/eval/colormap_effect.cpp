@@ -156,15 +156,17 @@ ShaderPtr make_colormap_shader(const EffectShaderRequest& request, Case which) {
     d.offset = o.at("offset");
     if (request.use.files.count("driver")) {
       const std::filesystem::path driver = request.use.files.at("driver");
-      d.pyramid = request.mode == EvalMode::filtered
-                      ? request.cache.get<MomentPyramid>("moments asset|" + request.assets.at(1).string(),
-                                                         [&] { return read_moment_pyramid(Asset::open(request.assets.at(1))); })
-                      : request.cache.get<MomentPyramid>("driver moments|" + driver.string(),
-                                                         [&] { return build_moment_pyramid(load_driver(driver, 0)); });
+      d.pyramid =
+          request.mode == EvalMode::filtered
+              ? request.cache.get<MomentPyramid>("moments asset|" + request.assets.at(1).string(),
+                                                 [&] { return read_moment_pyramid(Asset::open(request.assets.at(1))); })
+              : request.cache.get<MomentPyramid>("driver moments|" + driver.string(),
+                                                 [&] { return build_moment_pyramid(load_driver(driver, 0)); });
     } else {
       const nlohmann::json& n = o.at("noise");
       d.noise = {n.at("cells")[0], n.at("cells")[1], n.at("octaves"), n.at("gain"), n.at("seed")};
-      d.noise_table = request.cache.get<NoiseFootprintTable>("noise footprint table", [] { return NoiseFootprintTable(); });
+      d.noise_table =
+          request.cache.get<NoiseFootprintTable>("noise footprint table", [] { return NoiseFootprintTable(); });
     }
     s.driver = d;
   }

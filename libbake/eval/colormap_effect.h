@@ -19,7 +19,8 @@
 // level 0, the noise itself) and integrates the unresolved microsurface numerically at that point: heights
 // (Eq. 14 with the exact Smith visibility; its denominator integrates the whole height law, so it does not
 // depend on the driver) and slopes (Eq. 19), by Gauss-Legendre quadrature (heights: 256 nodes over +-8
-// sigma_h; slopes: a 48 x 48 grid over +-6 sigma; colormap_reference.h). The renderer averages the rays of the pixel, which filters the driver.
+// sigma_h; slopes: a 48 x 48 grid over +-6 sigma; colormap_reference.h). The renderer averages the rays of the pixel,
+// which filters the driver.
 #pragma once
 
 #include "libbake/eval/effect_shaders.h"

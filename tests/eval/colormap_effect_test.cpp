@@ -36,8 +36,8 @@ json scene(const std::string& mode, const json& effect_a, const json& effect_b, 
     effect["colormap"] = "stripes.json";
     return json{{"specular", {{"roughness", 0.4}, {"f0", 0.04}}}, {"effects", {effect}}};
   };
-  json s = testing::small_scene({{"a", material(effect_a)}, {"b", material(effect_b)}, {"c", material(effect_c)}},
-                                48, 30);
+  json s =
+      testing::small_scene({{"a", material(effect_a)}, {"b", material(effect_b)}, {"c", material(effect_c)}}, 48, 30);
   s["camera"]["position"] = {0.0, 0.8, 4.0};  // low over the plane: it recedes to the horizon
   s["camera"]["look_at"] = {0.0, 0.5, 0.0};
   return s;
@@ -45,7 +45,8 @@ json scene(const std::string& mode, const json& effect_a, const json& effect_b, 
 
 void bake(const Scene& s) {
   std::filesystem::create_directories(default_asset_folder(s));
-  for (const PlannedAsset& a : plan_assets(s)) a.recipe.bake(Progress::silent()).write(default_asset_folder(s) / a.file_name);
+  for (const PlannedAsset& a : plan_assets(s))
+    a.recipe.bake(Progress::silent()).write(default_asset_folder(s) / a.file_name);
 }
 
 Image render_mode(const Scene& s, uint32_t reference) {
@@ -71,10 +72,16 @@ double masked_rmse(const Image& a, const Image& b, const std::vector<bool>& mask
 TEST(ColormapEffect, FilteredIsCloserToTheReferenceThanNaive_RecedingNoisePlane) {
   ScratchDir dir("colormap_effect");
   write_stripes(dir / "stripes.json");
-  const json noise = {{"name", "colormap"}, {"noise", {{"cells", {4, 4}}, {"octaves", 4}, {"seed", 7}}},
-                      {"scale", 0.8}, {"offset", 0.5}};
-  const json height = {{"name", "colormap-height"}, {"noise", {{"cells", {2, 2}}, {"octaves", 2}}}, {"scale", 0.3},
-                       {"offset", 0.5}, {"sigma_h", 0.12}, {"slope_sigma", 0.5}};
+  const json noise = {{"name", "colormap"},
+                      {"noise", {{"cells", {4, 4}}, {"octaves", 4}, {"seed", 7}}},
+                      {"scale", 0.8},
+                      {"offset", 0.5}};
+  const json height = {{"name", "colormap-height"},
+                       {"noise", {{"cells", {2, 2}}, {"octaves", 2}}},
+                       {"scale", 0.3},
+                       {"offset", 0.5},
+                       {"sigma_h", 0.12},
+                       {"slope_sigma", 0.5}};
   const json slope = {{"name", "colormap-slope"}, {"slope_sigma", 0.4}, {"direction_degrees", 0}, {"offset", 0.5}};
   testing::write_json(dir / "filtered.json", scene("filtered", noise, height, slope));
   testing::write_json(dir / "naive.json", scene("naive", noise, height, slope));
@@ -98,8 +105,8 @@ TEST(ColormapEffect, FilteredIsCloserToTheReferenceThanNaive_RecedingNoisePlane)
     const size_t covered = size_t(std::count(mask.begin(), mask.end(), true));
     ASSERT_GT(covered, 40u) << m;
     const double e_filtered = masked_rmse(filtered, reference, mask), e_naive = masked_rmse(naive, reference, mask);
-    std::cout << "material " << m << ": " << covered << " pixels, RMSE to reference: naive " << e_naive
-              << ", filtered " << e_filtered << "\n";
+    std::cout << "material " << m << ": " << covered << " pixels, RMSE to reference: naive " << e_naive << ", filtered "
+              << e_filtered << "\n";
     EXPECT_LT(e_filtered, 0.7 * e_naive) << m;
   }
 }

@@ -45,10 +45,12 @@ TEST(ColormapEffectOptions, DefaultsAreFilledAndFilesResolved_NoNormalMapNeeded)
 }
 
 TEST(ColormapEffectOptions, ImageDriverAddsTheMomentPyramid) {
-  const Scene s = parse_scene(
-      scene_with({{"name", "colormap-height"}, {"colormap", "c.png"}, {"driver", "/abs/h.png"}, {"sigma_max", 0.25},
-                  {"table_size", {64, 32}}}),
-      "/scenes");
+  const Scene s = parse_scene(scene_with({{"name", "colormap-height"},
+                                          {"colormap", "c.png"},
+                                          {"driver", "/abs/h.png"},
+                                          {"sigma_max", 0.25},
+                                          {"table_size", {64, 32}}}),
+                              "/scenes");
   const EffectUse& use = s.materials.at("m").effects.at(0);
   EXPECT_EQ(use.options["sigma_h"], 0.1);
   EXPECT_FALSE(use.options.contains("noise"));
@@ -73,14 +75,16 @@ TEST(ColormapEffectOptions, BadOptionsNameTheirPath) {
       {{{"name", "colormap"}, {"colormap", "c.json"}, {"table_size", 256}}, at + ".table_size", "[width, height]"},
       {{{"name", "colormap"}, {"colormap", "c.json"}, {"sigma_max", -1}}, at + ".sigma_max", "outside"},
       {{{"name", "colormap"}, {"colormap", "c.json"}, {"driver", "d.png"}, {"noise", json::object()}},
-       at + ".noise", "not both"},
+       at + ".noise",
+       "not both"},
       {{{"name", "colormap"}, {"colormap", "c.json"}, {"noise", {{"octave", 3}}}}, at + ".noise.octave", "unknown"},
       {{{"name", "colormap"}, {"colormap", "c.json"}, {"noise", {{"octaves", 0}}}}, at + ".noise.octaves", "outside"},
       {{{"name", "colormap"}, {"colormap", "c.json"}, {"sigma_h", 0.1}}, at + ".sigma_h", "unknown"},
       {{{"name", "colormap-height"}, {"colormap", "c.json"}, {"sigma_h", 0}}, at + ".sigma_h", "outside"},
       {{{"name", "colormap-height"}, {"colormap", "c.json"}, {"slope_sigma", 0}}, at + ".slope_sigma", "outside"},
       {{{"name", "colormap-slope"}, {"colormap", "c.json"}, {"driver", "d.png"}}, at + ".driver", "unknown"},
-      {{{"name", "colormap-slope"}, {"colormap", "c.json"}, {"direction_degrees", "x"}}, at + ".direction_degrees",
+      {{{"name", "colormap-slope"}, {"colormap", "c.json"}, {"direction_degrees", "x"}},
+       at + ".direction_degrees",
        "number"},
   };
   for (const Case& c : cases) {
