@@ -16,7 +16,7 @@ constexpr double kSeriesBelow = -10.0;
 // The moments of x ~ N(k, 1) weighted by x_+: E_w[x] = T_2 / T_1 and Var_w[x] = T_3 / T_1 - E_w[x]^2, and
 // T_1 / phi(k).
 struct WeightedMoments {
-  double mean, variance, t1_over_pdf;
+  double mean, variance, t1;  // t1 = T_1(k)
 };
 
 // c^(n+1) I_n(c) / n! by the asymptotic series (1 + sum_j>0 (-1/2)^j (n+2j)! / (n! j! c^(2j))), summed while the
@@ -37,12 +37,14 @@ WeightedMoments weighted_moments(double k) {
     // I_1 = J_1 / c^2, I_2 = 2 J_2 / c^3, I_3 = 6 J_3 / c^4 with J_n = scaled_series(n, c).
     const double c = -k, j1 = scaled_series(1, c), j2 = scaled_series(2, c), j3 = scaled_series(3, c);
     const double mean = 2.0 * j2 / (c * j1), second = 6.0 * j3 / (c * c * j1);
-    return {mean, std::max(0.0, second - mean * mean), j1 / (c * c)};
+    return {mean, std::max(0.0, second - mean * mean), std::exp(-0.5 * k * k) / std::sqrt(2.0 * M_PI) * j1 / (c * c)};
   }
-  const double ratio = 0.5 * std::erfc(-k / std::sqrt(2.0)) / (std::exp(-0.5 * k * k) / std::sqrt(2.0 * M_PI));
-  const double t1 = k * ratio + 1.0, t2 = (k * k + 1.0) * ratio + k, t3 = (k * k * k + 3.0 * k) * ratio + (k * k + 2.0);
+  // The T_n divided by Phi(k), with r = phi(k) / Phi(k): finite for every k >= -10 (r -> 0 for large k, where
+  // phi underflows; dividing by phi instead overflowed to NaN beyond k ~ 38, i.e. near head-on views).
+  const double cdf = 0.5 * std::erfc(-k / std::sqrt(2.0)), r = std::exp(-0.5 * k * k) / std::sqrt(2.0 * M_PI) / cdf;
+  const double t1 = k + r, t2 = k * k + 1.0 + k * r, t3 = k * k * k + 3.0 * k + (k * k + 2.0) * r;
   const double mean = t2 / t1;
-  return {mean, std::max(0.0, t3 / t1 - mean * mean), t1};
+  return {mean, std::max(0.0, t3 / t1 - mean * mean), cdf * t1};
 }
 
 }  // namespace
@@ -64,7 +66,7 @@ VisibleSlopes visible_slope_distribution(const SlopeGaussian& slopes, const Vec3
   const double mean_t = sd * x.mean - a, var_t = v * x.variance;
   out.gaussian.mean = slopes.mean + sigma_b * ((mean_t - m) / v);
   out.gaussian.covariance = slopes.covariance + sigma_b * sigma_b.transpose() * ((var_t - v) / (v * v));
-  out.projected_area = sd * x.t1_over_pdf * std::exp(-0.5 * k * k) / std::sqrt(2.0 * M_PI);  // sqrt(v) T_1
+  out.projected_area = sd * x.t1;  // sqrt(v) T_1
   return out;
 }
 

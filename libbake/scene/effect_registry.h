@@ -58,5 +58,8 @@ BakeInput normal_map_input(const Material& material);
 
 // The effects, one file each.
 EffectInfo mip_effect();
+EffectInfo colormap_effect();         // effect_colormap.cpp
+EffectInfo colormap_height_effect();  // effect_colormap.cpp
+EffectInfo colormap_slope_effect();   // effect_colormap.cpp
 
 }  // namespace mbk

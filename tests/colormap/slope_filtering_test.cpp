@@ -96,6 +96,21 @@ TEST(SlopeFiltering, GrazingShiftsTowardFacetsFacingTheViewer) {
   EXPECT_NEAR(v.gaussian.covariance(1, 1), 0.04, 1e-15);  // untouched across it
 }
 
+TEST(SlopeFiltering, NearHeadOnTinyVarianceAlongViewStaysFinite_LargeK) {
+  // k = (w_z + m) / sqrt(v) ~ 40: phi(k) underflows. For large k the weight is ~ the ramp a + t, whose tilt
+  // moves the mean by Sigma b / (a + m) and squeezes the variance along b by (Sigma b)(Sigma b)^T / (a + m)^2.
+  SlopeGaussian g;
+  g.covariance = Mat2::Identity() * 0.35 * 0.35;
+  for (const Vec3& w : {Vec3(0.0142428, -0.0699566, 0.997448).normalized(), Vec3(1e-4, 0, 1).normalized()}) {
+    const VisibleSlopes v = visible_slope_distribution(g, w);
+    const Vec2 b(-w.x(), -w.y()), sb = g.covariance * b;
+    ASSERT_TRUE(v.gaussian.mean.allFinite() && v.gaussian.covariance.allFinite() && std::isfinite(v.projected_area));
+    EXPECT_LT((v.gaussian.mean - sb / w.z()).norm(), 1e-6);
+    EXPECT_LT((v.gaussian.covariance - (g.covariance - sb * sb.transpose() / (w.z() * w.z()))).norm(), 1e-6);
+    EXPECT_NEAR(v.projected_area, w.z(), 1e-12);
+  }
+}
+
 TEST(SlopeFiltering, FarBackFacingMeanStaysFinite_SeriesBranch) {
   // A mean slope tilted 30+ standard deviations away from the viewer: k << -10, the series branch. Continuity
   // across the branch point (k = -10) and agreement with brute force where the mass is still representable.

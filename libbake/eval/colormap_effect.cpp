@@ -1,0 +1,189 @@
+// The colour-map effect shaders (see colormap_effect.h).
+#include "libbake/eval/colormap_effect.h"
+
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <vector>
+
+#include "formats/asset.h"
+#include "libbake/colormap/colormap_reference.h"
+#include "libbake/colormap/colormap_shading.h"
+#include "libbake/colormap/colormap_source.h"
+#include "libbake/colormap/moment_pyramid.h"
+#include "libbake/colormap/noise_statistics.h"
+#include "libbake/core/gauss_legendre.h"
+#include "libbake/gen/periodic_noise.h"
+
+namespace mbk {
+namespace {
+
+enum class Case { texture, height, slope };
+
+// The driver f, mapped as offset + scale * f.
+struct DriverSource {
+  std::shared_ptr<const MomentPyramid> pyramid;  // image driver (all levels filtered; level 0 for the reference)
+  std::shared_ptr<const NoiseFootprintTable> noise_table;
+  NoiseParameters noise;
+  double scale = 1.0, offset = 0.0;
+
+  NoiseFootprint statistics(const Vec2& uv, const UvFootprint& f) const {
+    NoiseFootprint s;
+    if (pyramid) {
+      const Image& l0 = pyramid->levels.at(0);
+      const FootprintMoments m = sample_moments(*pyramid, uv, mip_lod(f, l0.width, l0.height));
+      s = {m.mean, m.variance};
+    } else {
+      const Vec2 box(std::abs(f.duv_dx.x()) + std::abs(f.duv_dy.x()), std::abs(f.duv_dx.y()) + std::abs(f.duv_dy.y()));
+      // A grazing ray's footprint is unbounded: the noise's statistics at a footprint far above its cell size.
+      s = fbm_footprint(*noise_table, noise, uv, box.array().isFinite().all() ? box : Vec2(1e6, 1e6));
+    }
+    return {offset + scale * s.mean, scale * scale * s.variance};
+  }
+  double at_point(const Vec2& uv) const {
+    const double f = pyramid ? sample_moments(*pyramid, uv, 0.0).mean
+                             : periodic_fbm(uv, noise.cells_x, noise.cells_y, noise.octaves, noise.gain, noise.seed);
+    return offset + scale * f;
+  }
+};
+
+struct Settings {
+  Case which = Case::texture;
+  bool naive = false;
+  std::shared_ptr<const ColormapTable> table;  // filtered mode
+  std::shared_ptr<const ColormapCurve> curve;  // reference mode
+  std::optional<DriverSource> driver;          // texture and height cases
+  Microsurface surface;                        // height and slope cases (height_offset 0: the driver shifts)
+  Vec2 direction = Vec2::UnitX();              // slope case
+  double slope_offset = 0.5;
+};
+
+// Quadrature of a standard normal over +-`extent` standard deviations: nodes z with weights phi(z) dz.
+std::vector<QuadratureNode> normal_quadrature(double extent, int panels, int order) {
+  std::vector<QuadratureNode> nodes = composite_gauss_legendre(-extent, extent, panels, order);
+  for (auto& n : nodes) n.w *= std::exp(-0.5 * n.x * n.x) / std::sqrt(2.0 * std::numbers::pi);
+  return nodes;
+}
+
+// w in the local frame (T, B, N). Where the tangents are undefined (a sphere's poles) any tangents do: the
+// isotropic microsurfaces are the same in every frame there.
+Vec3 local(const SurfaceFrame& frame, const Vec3& w) {
+  Vec3 t = frame.T, b = frame.B;
+  if (!t.allFinite() || !b.allFinite() || t.squaredNorm() < 0.5) {
+    t = frame.N.unitOrthogonal();
+    b = frame.N.cross(t);
+  }
+  Vec3 l(w.dot(t), w.dot(b), w.dot(frame.N));
+  l.z() = std::max(l.z(), 1e-4);  // directions at or below the horizon: Lambda stays finite (the shading is ~0)
+  return l.normalized();
+}
+
+Vec3 light_direction(const ShadingContext& c) {
+  const SceneLighting& l = *c.lighting;
+  if (!l.directionals.empty()) return local(c.frame, -l.directionals.front().direction);
+  if (!l.points.empty()) return local(c.frame, (l.points.front().position - c.position).normalized());
+  return Vec3::UnitZ();
+}
+
+class ColormapShader : public MaterialShader {
+ public:
+  ColormapShader(Settings s, ShaderPtr base) : s_(std::move(s)), base_(std::move(base)) {}
+
+  Vec3 radiance(const ShadingContext& c, const Brdf& brdf) const override {
+    Brdf coloured = brdf;
+    coloured.albedo = s_.table ? filtered_albedo(c) : reference_albedo(c);
+    return base_->radiance(c, coloured);
+  }
+
+ private:
+  Vec3 filtered_albedo(const ShadingContext& c) const {
+    const ColormapFiltering mode = s_.naive ? ColormapFiltering::naive : ColormapFiltering::filtered;
+    if (s_.which == Case::slope)
+      return slope_colormap(*s_.table, s_.surface, s_.direction, s_.slope_offset, local(c.frame, c.to_viewer), mode);
+    const NoiseFootprint f = s_.driver->statistics(c.uv, c.footprint);
+    if (s_.which == Case::texture) return texture_colormap(*s_.table, f.mean, std::sqrt(f.variance), mode);
+    return height_colormap(*s_.table, s_.surface, local(c.frame, c.to_viewer), light_direction(c), mode, f.mean,
+                           f.variance)
+        .color;
+  }
+
+  Vec3 reference_albedo(const ShadingContext& c) const {
+    // Heights: 256 nodes over +-8 sigma_h (D_h moves up to ~3 sigma_h at grazing angles); slopes: a 48 x 48
+    // grid over +-6 sigma (the 2-D integral is the costly one).
+    static const std::vector<QuadratureNode> z = normal_quadrature(8.0, 32, 8), zs = normal_quadrature(6.0, 12, 4);
+    if (s_.which == Case::texture) return arr(s_.curve->at(s_.driver->at_point(c.uv)));
+    const Vec3 wo = local(c.frame, c.to_viewer);
+    const Mat2& cov = s_.surface.slopes.covariance;
+    if (s_.which == Case::height) {
+      const double sigma_h = s_.surface.sigma_h, lo = smith_lambda(wo, cov);
+      std::vector<WeightedValue> heights;
+      for (const auto& n : z) heights.push_back({sigma_h * n.x, n.w});
+      // Eq. (14) at the point: its denominator integrates the whole height law, so it does not depend on the
+      // driver and the pixel's average of these ratios is Eq. (14) over the footprint.
+      return reference_height_colormap(*s_.curve, heights, sigma_h, s_.driver->at_point(c.uv), lo,
+                                       smith_lambda(light_direction(c), cov));
+    }
+    const double sx = std::sqrt(cov(0, 0)), sy = std::sqrt(cov(1, 1));
+    std::vector<WeightedSlope> slopes;
+    for (const auto& a : zs)
+      for (const auto& b : zs) slopes.push_back({s_.surface.slopes.mean + Vec2(sx * a.x, sy * b.x), a.w * b.w});
+    return reference_slope_colormap(*s_.curve, slopes, s_.direction, s_.slope_offset, wo);
+  }
+
+  static Vec3 arr(const std::array<double, 3>& v) { return {v[0], v[1], v[2]}; }
+
+  Settings s_;
+  ShaderPtr base_;
+};
+
+ShaderPtr make_colormap_shader(const EffectShaderRequest& request, Case which) {
+  const nlohmann::json& o = request.use.options;
+  Settings s;
+  s.which = which;
+  s.naive = o.at("mode") == "naive";
+  if (request.mode == EvalMode::filtered) {
+    const std::filesystem::path& file = request.assets.at(0);
+    s.table = request.cache.get<ColormapTable>("colormap asset|" + file.string(),
+                                               [&] { return read_colormap_table(Asset::open(file)); });
+  } else {
+    const std::filesystem::path& map = request.use.files.at("colormap");
+    s.curve = request.cache.get<ColormapCurve>(
+        "colormap source|" + map.string(), [&] { return load_colormap_source(map, ColorEncoding::automatic).curve; });
+  }
+  if (which != Case::slope) {
+    DriverSource d;
+    d.scale = o.at("scale");
+    d.offset = o.at("offset");
+    if (request.use.files.count("driver")) {
+      const std::filesystem::path driver = request.use.files.at("driver");
+      d.pyramid =
+          request.mode == EvalMode::filtered
+              ? request.cache.get<MomentPyramid>("moments asset|" + request.assets.at(1).string(),
+                                                 [&] { return read_moment_pyramid(Asset::open(request.assets.at(1))); })
+              : request.cache.get<MomentPyramid>("driver moments|" + driver.string(),
+                                                 [&] { return build_moment_pyramid(load_driver(driver, 0)); });
+    } else {
+      const nlohmann::json& n = o.at("noise");
+      d.noise = {n.at("cells")[0], n.at("cells")[1], n.at("octaves"), n.at("gain"), n.at("seed")};
+      d.noise_table =
+          request.cache.get<NoiseFootprintTable>("noise footprint table", [] { return NoiseFootprintTable(); });
+    }
+    s.driver = d;
+  }
+  const double slope_sigma = o.value("slope_sigma", 0.3);
+  s.surface.height_offset = 0.0;
+  s.surface.sigma_h = o.value("sigma_h", 0.0);
+  s.surface.slopes.covariance = Mat2::Identity() * slope_sigma * slope_sigma;
+  const double angle = o.value("direction_degrees", 0.0) * std::numbers::pi / 180.0;
+  s.direction = Vec2(std::cos(angle), std::sin(angle));
+  s.slope_offset = o.value("offset", 0.5);
+  return std::make_shared<ColormapShader>(std::move(s), request.base);
+}
+
+}  // namespace
+
+ShaderPtr colormap_effect_shader(const EffectShaderRequest& r) { return make_colormap_shader(r, Case::texture); }
+ShaderPtr colormap_height_effect_shader(const EffectShaderRequest& r) { return make_colormap_shader(r, Case::height); }
+ShaderPtr colormap_slope_effect_shader(const EffectShaderRequest& r) { return make_colormap_shader(r, Case::slope); }
+
+}  // namespace mbk
