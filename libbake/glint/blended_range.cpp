@@ -12,9 +12,7 @@ namespace mbk {
 namespace {
 
 // Bilinear weight of corner k at local coordinates f (target_patch_grid.h).
-double corner_weight(int k, double f0, double f1) {
-  return ((k & 1) ? f0 : 1.0 - f0) * ((k >> 1) ? f1 : 1.0 - f1);
-}
+double corner_weight(int k, double f0, double f1) { return ((k & 1) ? f0 : 1.0 - f0) * ((k >> 1) ? f1 : 1.0 - f1); }
 
 // Extremes over the box of the bilinear sum_k w_k(f) c_k: at the box's four corners.
 std::array<double, 2> bilinear_extremes(const Vec2& f_lo, const Vec2& f_hi, const std::array<double, 4>& c) {
@@ -102,9 +100,9 @@ GlintRangeQuery::GlintRangeQuery(const GlintPointQuery& point, const RmqTableVie
                 "range query");
   if (rmq.layout().width != point.example().width || rmq.layout().height != point.example().height)
     throw Error(ExitCode::invalid_input,
-                "rmq table is for a " + std::to_string(rmq.layout().width) + "x" +
-                    std::to_string(rmq.layout().height) + " example, the point query's example is " +
-                    std::to_string(point.example().width) + "x" + std::to_string(point.example().height),
+                "rmq table is for a " + std::to_string(rmq.layout().width) + "x" + std::to_string(rmq.layout().height) +
+                    " example, the point query's example is " + std::to_string(point.example().width) + "x" +
+                    std::to_string(point.example().height),
                 "range query");
 }
 

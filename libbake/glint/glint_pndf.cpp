@@ -52,8 +52,8 @@ TexelRange footprint_texels(const GlintFootprint& footprint) {
   if (std::abs(c.x()) + r > kLimit || std::abs(c.y()) + r > kLimit)
     throw Error(ExitCode::invalid_input, "P-NDF footprint lies too far from the origin", "P-NDF");
   // Centre t + 0.5 in [c - r, c + r].
-  return {int64_t(std::ceil(c.x() - r - 0.5)), int64_t(std::floor(c.x() + r - 0.5)), int64_t(std::ceil(c.y() - r - 0.5)),
-          int64_t(std::floor(c.y() + r - 0.5))};
+  return {int64_t(std::ceil(c.x() - r - 0.5)), int64_t(std::floor(c.x() + r - 0.5)),
+          int64_t(std::ceil(c.y() - r - 0.5)), int64_t(std::floor(c.y() + r - 0.5))};
 }
 
 GlintPndf::GlintPndf(const GlintRangeQuery& range, double sigma_r) : range_(&range), sigma_r_(sigma_r) {
@@ -128,7 +128,11 @@ double GlintPndf::evaluate(const GlintFootprint& footprint, const Vec2& s, PndfS
     for (int64_t pi = floor_div(t.t0_lo, h); pi <= floor_div(t.t0_hi, h); ++pi) {
       const int64_t x_lo = std::max(t.t0_lo, pi * h), x_hi = std::min(t.t0_hi, pi * h + h - 1);
       const int64_t y_lo = std::max(t.t1_lo, pj * h), y_hi = std::min(t.t1_hi, pj * h + h - 1);
-      const TargetNode root{pi, pj, uint32_t(x_lo - pi * h), uint32_t(y_lo - pj * h), uint32_t(x_hi - x_lo + 1),
+      const TargetNode root{pi,
+                            pj,
+                            uint32_t(x_lo - pi * h),
+                            uint32_t(y_lo - pj * h),
+                            uint32_t(x_hi - x_lo + 1),
                             uint32_t(y_hi - y_lo + 1)};
       sum += traverse(root, footprint, s, local);
     }
@@ -150,8 +154,8 @@ std::optional<Vec2> GlintPndf::sample(const GlintFootprint& footprint, const std
     const int64_t t1 = t.t1_lo + int64_t(pick(wy, uniform()));
     const Vec2 u = texel_center(t0, t1);
     const NormalSample q = range_->point().evaluate(u);
-    const Vec2 s = sample_element_normal({u, q.n, q.jacobian}, footprint, sigma_r_,
-                                         {uniform(), uniform(), uniform(), uniform()});
+    const Vec2 s =
+        sample_element_normal({u, q.n, q.jacobian}, footprint, sigma_r_, {uniform(), uniform(), uniform(), uniform()});
     if (!outside(range_->element_bounds(t0, t1), s)) return s;
   }
   return std::nullopt;

@@ -71,8 +71,7 @@ class GlintPndf {
   double element_term(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Vec2& s) const;
   bool outside(const RmqBounds& b, const Vec2& s) const;
   double normalizer(const GlintFootprint& footprint, const TexelRange& texels) const;
-  double traverse(const TargetNode& node, const GlintFootprint& footprint, const Vec2& s,
-                  PndfStatistics& stats) const;
+  double traverse(const TargetNode& node, const GlintFootprint& footprint, const Vec2& s, PndfStatistics& stats) const;
 
   const GlintRangeQuery* range_;
   double sigma_r_;

@@ -21,8 +21,8 @@ Vec2 standard_normal_pair(double u1, double u2) {
 
 }  // namespace
 
-double element_footprint_integral(const PositionNormalElement& element, const GlintFootprint& footprint,
-                                  double sigma_r, const Vec2& s) {
+double element_footprint_integral(const PositionNormalElement& element, const GlintFootprint& footprint, double sigma_r,
+                                  const Vec2& s) {
   const double ip = 1.0 / (footprint.sigma * footprint.sigma), ir = 1.0 / (sigma_r * sigma_r);
   const Vec2 d = element.center - footprint.center;
   const Vec2 r = s - element.n;
@@ -51,8 +51,7 @@ Vec2 sample_element_normal(const PositionNormalElement& element, const GlintFoot
   const Vec2 mean = (kSigmaH2 * footprint.center + sp2 * element.center) / (sp2 + kSigmaH2);
   const double se = std::sqrt(sp2 * kSigmaH2 / (sp2 + kSigmaH2));
   const Vec2 u = mean + se * standard_normal_pair(uniforms[0], uniforms[1]);
-  return element.n + element.jacobian * (u - element.center) +
-         sigma_r * standard_normal_pair(uniforms[2], uniforms[3]);
+  return element.n + element.jacobian * (u - element.center) + sigma_r * standard_normal_pair(uniforms[2], uniforms[3]);
 }
 
 }  // namespace mbk

@@ -36,8 +36,8 @@ struct PositionNormalElement {
 };
 
 // Eq. (1) above.
-double element_footprint_integral(const PositionNormalElement& element, const GlintFootprint& footprint,
-                                  double sigma_r, const Vec2& s);
+double element_footprint_integral(const PositionNormalElement& element, const GlintFootprint& footprint, double sigma_r,
+                                  const Vec2& s);
 // Eq. (2) above; depends on the element only through its centre.
 double element_footprint_mass(const Vec2& element_center, const GlintFootprint& footprint, double sigma_r);
 // A normal with density k_i / m_i, from four independent uniform numbers in [0, 1).

@@ -82,45 +82,46 @@ int main(int argc, char** argv) {
 
   const std::array<mbk::RmqRange, 2>& normal_range = view16.range();
   for (const bool reflected : {true, false})
-  for (const double sigma_r : {0.005, 0.01}) {
-    const mbk::GlintPndf pndf16(range16, sigma_r), pndf8(range8, sigma_r);
-    for (const double width : {16.0, 64.0, 256.0}) {
-      // Fixed queries: footprint centres anywhere in +/- 10^4 texels; s = the normal at a random point of the
-      // footprint moved by up to 3 sigma_r (`reflected`: a half vector that some texels reflect), or uniform
-      // over the example's box of normals (a half vector anywhere the NDF may be non-zero).
-      std::mt19937_64 rng(uint64_t(width * 1000 + sigma_r * 1e6));
-      std::uniform_real_distribution<double> unit(0.0, 1.0);
-      std::vector<Query> queries(200);
-      for (Query& q : queries) {
-        q.footprint = {Vec2((2 * unit(rng) - 1) * 1e4, (2 * unit(rng) - 1) * 1e4),
-                       width / (2 * mbk::kGlintFootprintCutoffSigmas)};
-        const Vec2 inside = q.footprint.center + width * Vec2(unit(rng) - 0.5, unit(rng) - 0.5);
-        q.s = point.evaluate(inside).n + 3 * sigma_r * Vec2(2 * unit(rng) - 1, 2 * unit(rng) - 1);
-        if (!reflected)
-          q.s = Vec2(normal_range[0].lo + unit(rng) * (normal_range[0].hi - normal_range[0].lo),
-                     normal_range[1].lo + unit(rng) * (normal_range[1].hi - normal_range[1].lo));
+    for (const double sigma_r : {0.005, 0.01}) {
+      const mbk::GlintPndf pndf16(range16, sigma_r), pndf8(range8, sigma_r);
+      for (const double width : {16.0, 64.0, 256.0}) {
+        // Fixed queries: footprint centres anywhere in +/- 10^4 texels; s = the normal at a random point of the
+        // footprint moved by up to 3 sigma_r (`reflected`: a half vector that some texels reflect), or uniform
+        // over the example's box of normals (a half vector anywhere the NDF may be non-zero).
+        std::mt19937_64 rng(uint64_t(width * 1000 + sigma_r * 1e6));
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
+        std::vector<Query> queries(200);
+        for (Query& q : queries) {
+          q.footprint = {Vec2((2 * unit(rng) - 1) * 1e4, (2 * unit(rng) - 1) * 1e4),
+                         width / (2 * mbk::kGlintFootprintCutoffSigmas)};
+          const Vec2 inside = q.footprint.center + width * Vec2(unit(rng) - 0.5, unit(rng) - 0.5);
+          q.s = point.evaluate(inside).n + 3 * sigma_r * Vec2(2 * unit(rng) - 1, 2 * unit(rng) - 1);
+          if (!reflected)
+            q.s = Vec2(normal_range[0].lo + unit(rng) * (normal_range[0].hi - normal_range[0].lo),
+                       normal_range[1].lo + unit(rng) * (normal_range[1].hi - normal_range[1].lo));
+        }
+        const Timing t16 = time_queries(queries, 1.0, [&](const Query& q, mbk::PndfStatistics* st) {
+          return pndf16.evaluate(q.footprint, q.s, st);
+        });
+        const Timing t8 = time_queries(queries, 1.0, [&](const Query& q, mbk::PndfStatistics* st) {
+          return pndf8.evaluate(q.footprint, q.s, st);
+        });
+        const Timing brute = time_queries(queries, 2.0, [&](const Query& q, mbk::PndfStatistics*) {
+          return pndf16.evaluate_brute_force(q.footprint, q.s);
+        });
+        // Agreement over the queries the brute force finished (all of them at 16^2 and 64^2).
+        double worst = 0.0;
+        const size_t checked = std::min<size_t>(queries.size(), std::min(t16.done, brute.done));
+        for (size_t i = 0; i < checked; ++i)
+          if (brute.values[i] != 0.0) worst = std::max(worst, std::abs(t16.values[i] / brute.values[i] - 1.0));
+        const double texels = width * width;
+        std::printf(
+            "| %s | %s | %.0f^2 | %.3f | %.0f | %.1f | %.2f | %.0f | %.0f | %.2f | %.0f | %.2f | %.0f | %.1e |\n",
+            kind.c_str(), reflected ? "reflected" : "any", width, sigma_r, t16.per_second, brute.per_second,
+            t16.per_second / brute.per_second, texels, t16.mean_nodes, t8.mean_nodes / t16.mean_nodes, t8.per_second,
+            t16.per_second / t8.per_second, t16.mean_elements, worst);
+        std::fflush(stdout);
       }
-      const Timing t16 = time_queries(queries, 1.0, [&](const Query& q, mbk::PndfStatistics* st) {
-        return pndf16.evaluate(q.footprint, q.s, st);
-      });
-      const Timing t8 = time_queries(queries, 1.0, [&](const Query& q, mbk::PndfStatistics* st) {
-        return pndf8.evaluate(q.footprint, q.s, st);
-      });
-      const Timing brute = time_queries(queries, 2.0, [&](const Query& q, mbk::PndfStatistics*) {
-        return pndf16.evaluate_brute_force(q.footprint, q.s);
-      });
-      // Agreement over the queries the brute force finished (all of them at 16^2 and 64^2).
-      double worst = 0.0;
-      const size_t checked = std::min<size_t>(queries.size(), std::min(t16.done, brute.done));
-      for (size_t i = 0; i < checked; ++i)
-        if (brute.values[i] != 0.0) worst = std::max(worst, std::abs(t16.values[i] / brute.values[i] - 1.0));
-      const double texels = width * width;
-      std::printf("| %s | %s | %.0f^2 | %.3f | %.0f | %.1f | %.2f | %.0f | %.0f | %.2f | %.0f | %.2f | %.0f | %.1e |\n", 
-                  kind.c_str(), reflected ? "reflected" : "any", width, sigma_r, t16.per_second, brute.per_second, t16.per_second / brute.per_second, texels,
-                  t16.mean_nodes, t8.mean_nodes / t16.mean_nodes, t8.per_second, t16.per_second / t8.per_second,
-                  t16.mean_elements, worst);
-      std::fflush(stdout);
     }
-  }
   return 0;
 }

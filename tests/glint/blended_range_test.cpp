@@ -134,8 +134,8 @@ void check_nodes_contain_brute_force(const char* kind) {
         ASSERT_GE(b.max_y, hull.max_y) << kind << " " << mode_name(mode) << " node " << n;
         slack += (b.max_x - b.min_x) / std::max(hull.max_x - hull.min_x, 1e-9);
       }
-      std::printf("[ info ] %s, %u bits, %s: %d nodes, %lld texels, mean width ratio (bound / truth) n_x %.3f\n",
-                  kind, view.layout().bits, mode_name(mode), kNodes, (long long)texels, slack / kNodes);
+      std::printf("[ info ] %s, %u bits, %s: %d nodes, %lld texels, mean width ratio (bound / truth) n_x %.3f\n", kind,
+                  view.layout().bits, mode_name(mode), kNodes, (long long)texels, slack / kNodes);
     }
   }
 }
@@ -153,16 +153,16 @@ TEST(GlintRangeQuery, NodeBoundsContainBruteForceBlendedExtremes_Flakes_AllModes
 TEST(GlintRangeQuery, VarianceBoundUsesInteriorMinimumOfWeightNorm) {
   const RmqBounds c{0.9, 0.9, -0.9, -0.9};
   const std::array<RmqBounds, 4> corners = {c, c, c, c};
-  const RmqBounds b = blend_range_bounds(GlintBlendMode::variance, Vec2(0.1, 0.1), Vec2(0.9, 0.9), corners,
-                                         Vec2::Zero(), nullptr);
+  const RmqBounds b =
+      blend_range_bounds(GlintBlendMode::variance, Vec2(0.1, 0.1), Vec2(0.9, 0.9), corners, Vec2::Zero(), nullptr);
   EXPECT_GE(b.max_x, 1.8);
   EXPECT_LE(b.min_y, -1.8);
   // The corners-only bound would be 0.9 / W(0.1, 0.1), below the centre's value: the trap is real.
   const double w_corner = (0.9 * 0.9 + 0.1 * 0.1);
   EXPECT_LT(0.9 / w_corner, 1.8 - 0.5);
   // A node that stays on one side of the centre gets W's minimum at its edge nearest 1/2.
-  const RmqBounds side = blend_range_bounds(GlintBlendMode::variance, Vec2(0.0, 0.0), Vec2(0.25, 0.25), corners,
-                                            Vec2::Zero(), nullptr);
+  const RmqBounds side =
+      blend_range_bounds(GlintBlendMode::variance, Vec2(0.0, 0.0), Vec2(0.25, 0.25), corners, Vec2::Zero(), nullptr);
   const double q = 0.75 * 0.75 + 0.25 * 0.25;  // q(0.25)
   EXPECT_NEAR(side.max_x, 0.9 / q, 1e-9);
 }

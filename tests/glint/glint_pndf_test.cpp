@@ -193,15 +193,15 @@ TEST(GlintPndf, SampleHistogramMatchesPndf_RelativeL1Within2Percent) {
         double integral = 0.0;
         for (int sj = 0; sj < kSub; ++sj)
           for (int si = 0; si < kSub; ++si)
-            integral += pndf.evaluate(fp, Vec2(box.min_x + (i + (si + 0.5) / kSub) * bx,
-                                               box.min_y + (j + (sj + 0.5) / kSub) * by));
+            integral += pndf.evaluate(
+                fp, Vec2(box.min_x + (i + (si + 0.5) / kSub) * bx, box.min_y + (j + (sj + 0.5) / kSub) * by));
         integral *= bx * by / (kSub * kSub);
         expected[size_t(j * kBins + i)] = integral;
         mass += integral;
       }
     for (size_t b = 0; b < hist.size(); ++b) l1 += std::abs(hist[b] - expected[b] / mass);
-    std::printf("[ info ] sampling: relative L1 %.4f over %d samples, P-NDF mass in the grid %.5f\n", l1,
-                kSamples, mass);
+    std::printf("[ info ] sampling: relative L1 %.4f over %d samples, P-NDF mass in the grid %.5f\n", l1, kSamples,
+                mass);
     EXPECT_LE(l1, 0.02);
   }
 }
@@ -251,9 +251,8 @@ TEST(GlintPndf, TraversalVisitsFewerNodesThanTexels) {
   pndf.evaluate(fp, q.evaluate(fp.center).n, &stats);
   const TexelRange t = footprint_texels(fp);
   const uint64_t texels = uint64_t((t.t0_hi - t.t0_lo + 1) * (t.t1_hi - t.t1_lo + 1));
-  std::printf("[ info ] %llu nodes, %llu elements evaluated for %llu texels\n",
-              (unsigned long long)stats.nodes_visited, (unsigned long long)stats.elements_evaluated,
-              (unsigned long long)texels);
+  std::printf("[ info ] %llu nodes, %llu elements evaluated for %llu texels\n", (unsigned long long)stats.nodes_visited,
+              (unsigned long long)stats.elements_evaluated, (unsigned long long)texels);
   EXPECT_LT(stats.nodes_visited, texels);
   EXPECT_GT(stats.elements_evaluated, 0u);
 }
