@@ -18,6 +18,7 @@
 #include "formats/lut_layout.h"
 #include "libbake/core/progress.h"
 #include "libbake/gen/generator.h"
+#include "libbake/glint/glint_surface.h"
 #include "libbake/glint/blended_range.h"
 #include "libbake/glint/element_normal_bounds.h"
 #include "libbake/glint/lut_asset.h"
@@ -28,10 +29,6 @@ namespace {
 
 constexpr std::array<GlintBlendMode, 4> kModes = {GlintBlendMode::none, GlintBlendMode::linear,
                                                   GlintBlendMode::variance, GlintBlendMode::histogram};
-const char* mode_name(GlintBlendMode m) {
-  constexpr const char* names[] = {"none", "linear", "variance", "histogram"};
-  return names[int(m)];
-}
 
 // The blend of one channel written out directly from [Wang20] Eqs. 4-6 (independent of blended_range.cpp).
 double blend_scalar(GlintBlendMode mode, const TargetPatchLocation& loc, const std::array<double, 4>& v, double mean,
@@ -122,20 +119,20 @@ void check_nodes_contain_brute_force(const char* kind) {
             const Truth t = brute_force_element(q, node.patch_i * h + x, node.patch_j * h + y);
             hull = {std::min(hull.min_x, t.box.min_x), std::max(hull.max_x, t.box.max_x),
                     std::min(hull.min_y, t.box.min_y), std::max(hull.max_y, t.box.max_y)};
-            ASSERT_LE(t.box.min_x, t.n.x() + 1e-12) << mode_name(mode);
-            ASSERT_GE(t.box.max_x, t.n.x() - 1e-12) << mode_name(mode);
-            ASSERT_LE(t.box.min_y, t.n.y() + 1e-12) << mode_name(mode);
-            ASSERT_GE(t.box.max_y, t.n.y() - 1e-12) << mode_name(mode);
+            ASSERT_LE(t.box.min_x, t.n.x() + 1e-12) << glint_blend_mode_name(mode);
+            ASSERT_GE(t.box.max_x, t.n.x() - 1e-12) << glint_blend_mode_name(mode);
+            ASSERT_LE(t.box.min_y, t.n.y() + 1e-12) << glint_blend_mode_name(mode);
+            ASSERT_GE(t.box.max_y, t.n.y() - 1e-12) << glint_blend_mode_name(mode);
             ++texels;
           }
-        ASSERT_LE(b.min_x, hull.min_x) << kind << " " << mode_name(mode) << " node " << n;
-        ASSERT_GE(b.max_x, hull.max_x) << kind << " " << mode_name(mode) << " node " << n;
-        ASSERT_LE(b.min_y, hull.min_y) << kind << " " << mode_name(mode) << " node " << n;
-        ASSERT_GE(b.max_y, hull.max_y) << kind << " " << mode_name(mode) << " node " << n;
+        ASSERT_LE(b.min_x, hull.min_x) << kind << " " << glint_blend_mode_name(mode) << " node " << n;
+        ASSERT_GE(b.max_x, hull.max_x) << kind << " " << glint_blend_mode_name(mode) << " node " << n;
+        ASSERT_LE(b.min_y, hull.min_y) << kind << " " << glint_blend_mode_name(mode) << " node " << n;
+        ASSERT_GE(b.max_y, hull.max_y) << kind << " " << glint_blend_mode_name(mode) << " node " << n;
         slack += (b.max_x - b.min_x) / std::max(hull.max_x - hull.min_x, 1e-9);
       }
       std::printf("[ info ] %s, %u bits, %s: %d nodes, %lld texels, mean width ratio (bound / truth) n_x %.3f\n", kind,
-                  view.layout().bits, mode_name(mode), kNodes, (long long)texels, slack / kNodes);
+                  view.layout().bits, glint_blend_mode_name(mode), kNodes, (long long)texels, slack / kNodes);
     }
   }
 }
@@ -180,10 +177,10 @@ TEST(GlintRangeQuery, ElementBoundsEqualScalarBlendOfLeafIntervals_AllModes) {
       const int64_t t0 = t(rng), t1 = t(rng);
       const RmqBounds b = r.element_bounds(t0, t1);
       const Truth truth = brute_force_element(q, t0, t1);
-      ASSERT_NEAR(b.min_x, truth.box.min_x, 1e-11) << mode_name(mode);
-      ASSERT_NEAR(b.max_x, truth.box.max_x, 1e-11) << mode_name(mode);
-      ASSERT_NEAR(b.min_y, truth.box.min_y, 1e-11) << mode_name(mode);
-      ASSERT_NEAR(b.max_y, truth.box.max_y, 1e-11) << mode_name(mode);
+      ASSERT_NEAR(b.min_x, truth.box.min_x, 1e-11) << glint_blend_mode_name(mode);
+      ASSERT_NEAR(b.max_x, truth.box.max_x, 1e-11) << glint_blend_mode_name(mode);
+      ASSERT_NEAR(b.min_y, truth.box.min_y, 1e-11) << glint_blend_mode_name(mode);
+      ASSERT_NEAR(b.max_y, truth.box.max_y, 1e-11) << glint_blend_mode_name(mode);
     }
   }
 }
@@ -197,10 +194,10 @@ TEST(GlintRangeQuery, ConstantExampleGivesPointBounds_AllModes) {
     const GlintPointQuery q(flat, 16, 1, mode, &lut.tables);
     const GlintRangeQuery r(q, view);
     const RmqBounds b = r.node_bounds({-7, 3, 0, 0, 8, 8});
-    EXPECT_NEAR(b.min_x, 0.3, 1e-6) << mode_name(mode);
-    EXPECT_NEAR(b.max_x, 0.3, 1e-6) << mode_name(mode);
-    EXPECT_NEAR(b.min_y, -0.2, 1e-6) << mode_name(mode);
-    EXPECT_NEAR(b.max_y, -0.2, 1e-6) << mode_name(mode);
+    EXPECT_NEAR(b.min_x, 0.3, 1e-6) << glint_blend_mode_name(mode);
+    EXPECT_NEAR(b.max_x, 0.3, 1e-6) << glint_blend_mode_name(mode);
+    EXPECT_NEAR(b.min_y, -0.2, 1e-6) << glint_blend_mode_name(mode);
+    EXPECT_NEAR(b.max_y, -0.2, 1e-6) << glint_blend_mode_name(mode);
   }
 }
 
