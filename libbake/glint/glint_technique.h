@@ -38,7 +38,8 @@
 // - P-NDF ([Wang20] Eqs. 1-3, Alg. 3, Sec. 5.2-5.3): position_normal_element.h (one element through a Gaussian
 //   footprint in closed form, its mass, a sample), glint_pndf.h (D_P by traversal, by brute force, and
 //   importance sampling; its truncation rules), glint_surface_mapping.h (uv and pixel footprints to the target
-//   plane, with the v flip: target u_1 runs down the rows, tangent +v up).
+//   plane, with the v flip: target u_1 runs down the rows, tangent +v up), glint_surface.h (a glint material
+//   assembled from the example and its two assets read through formats/: what the evaluator's shaders call).
 //
 // Conventions shared by every glint table (they all describe the same example; the evaluator reads them all):
 // - The example is a NormalMap (libbake/image/normal_map.h: +Y, row 0 at the top, texel (x, row)). Glints use
