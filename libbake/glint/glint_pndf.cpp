@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "formats/error.h"
@@ -54,6 +55,13 @@ TexelRange footprint_texels(const GlintFootprint& footprint) {
   // Centre t + 0.5 in [c - r, c + r].
   return {int64_t(std::ceil(c.x() - r - 0.5)), int64_t(std::floor(c.x() + r - 0.5)),
           int64_t(std::ceil(c.y() - r - 0.5)), int64_t(std::floor(c.y() + r - 0.5))};
+}
+
+double point_ndf(const GlintPointQuery& point, const Vec2& u, double sigma_r, const Vec2& s) {
+  if (!(std::isfinite(sigma_r) && sigma_r > 0.0))
+    throw Error(ExitCode::invalid_input, "point NDF intrinsic roughness must be finite and > 0", "P-NDF");
+  const double r2 = (s - point.evaluate(u).n).squaredNorm() / (sigma_r * sigma_r);
+  return std::exp(-0.5 * r2) / (2.0 * std::numbers::pi * sigma_r * sigma_r);
 }
 
 GlintPndf::GlintPndf(const GlintRangeQuery& range, double sigma_r) : range_(&range), sigma_r_(sigma_r) {

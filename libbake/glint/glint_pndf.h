@@ -46,6 +46,14 @@ struct TexelRange {
 // non-finite centre or a sigma that is not finite and > 0.
 TexelRange footprint_texels(const GlintFootprint& footprint);
 
+// The reference the P-NDF approximates ([Wang20] Eq. 1 before Yan16's elements): the NDF of ONE point u of the
+// infinite microstructure, the intrinsic-roughness Gaussian around its exact normal n(u) (the point query),
+//   D_u(s) = exp(-|s - n(u)|^2 / (2 sigma_r^2)) / (2 pi sigma_r^2),
+// untruncated, integrating to 1. Averaged over a pixel's area (a renderer's many rays per pixel) it converges
+// to Eq. 1 with that pixel's footprint and the continuous normal field, which the P-NDF approximates with one
+// linearized element per texel. Throws Error(invalid_input) unless sigma_r is finite and > 0.
+double point_ndf(const GlintPointQuery& point, const Vec2& u, double sigma_r, const Vec2& s);
+
 struct PndfStatistics {
   uint64_t nodes_visited = 0;  // range-query nodes plus element tests
   uint64_t elements_evaluated = 0;

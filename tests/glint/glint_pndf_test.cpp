@@ -257,5 +257,31 @@ TEST(GlintPndf, TraversalVisitsFewerNodesThanTexels) {
   EXPECT_GT(stats.elements_evaluated, 0u);
 }
 
+// On a constant example every element is the same Gaussian around the constant normal with J = 0, so D_P equals
+// the point NDF exactly, for any footprint; and the point NDF integrates to 1.
+TEST(GlintPndf, ConstantExampleGivesThePointNdfForAnyFootprint) {
+  const Vec2 c(0.2, -0.1);
+  NormalMap flat{64, 64, std::vector<Vec3f>(64 * 64, Vec3f(0.2f, -0.1f, std::sqrt(1.0f - 0.05f)))};
+  const RmqTable table = build_rmq_table(flat, 16, 16, Progress::silent());
+  const RmqTableView view = table.view();
+  const GlintPointQuery q(flat, 16, 1, GlintBlendMode::variance);
+  const GlintRangeQuery r(q, view);
+  const GlintPndf pndf(r, 0.01);
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<double> v(-1.0, 1.0);
+  for (int n = 0; n < 100; ++n) {
+    const GlintFootprint fp{Vec2(100 * v(rng), 100 * v(rng)), 0.5 + 10 * std::abs(v(rng))};
+    const Vec2 s = c + 0.03 * Vec2(v(rng), v(rng));
+    const double reference = point_ndf(q, fp.center, 0.01, s);
+    EXPECT_NEAR(pndf.evaluate(fp, s), reference, 1e-9 * reference + 1e-12);
+  }
+  double total = 0.0;
+  const double step = 0.0025;
+  for (double y = -0.1 - 0.08; y < -0.1 + 0.08; y += step)
+    for (double x = 0.2 - 0.08; x < 0.2 + 0.08; x += step) total += point_ndf(q, Vec2(3, 4), 0.01, Vec2(x, y));
+  EXPECT_NEAR(total * step * step, 1.0, 1e-6);
+  EXPECT_THROW(point_ndf(q, Vec2(0, 0), 0.0, c), Error);
+}
+
 }  // namespace
 }  // namespace mbk
