@@ -21,8 +21,8 @@ GlintFootprint glint_pixel_footprint(const Vec2& uv, const Vec2& duv_dx, const V
                                      uint32_t height) {
   const auto texels = [&](const Vec2& d) { return Vec2(d.x() * width, d.y() * height).norm(); };
   const double longer = std::max(texels(duv_dx), texels(duv_dy));
-  // NaN stays NaN through the comparisons below only if tested first: keep it for footprint_texels() to refuse.
-  const double sigma = std::isfinite(longer) ? std::max(0.5 * longer, kGlintMinFootprintSigma) : longer;
+  // Non-finite (grazing) stays non-finite, for footprint_texels() to refuse.
+  const double sigma = std::isfinite(longer) ? std::max(longer / std::sqrt(12.0), kGlintMinFootprintSigma) : longer;
   return {glint_target_point(uv, width, height), sigma};
 }
 

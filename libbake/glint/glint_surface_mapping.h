@@ -11,9 +11,10 @@
 // convention). Derivatives with respect to uv: dn/duv = J * diag(W, -H) (tangent_jacobian()).
 //
 // Footprint: the pixel's uv derivatives (ray differentials, libbake/eval/uv_footprint.h) in target texels,
-// isotropic: sigma_p = max(0.5 * max(|du/dx|, |du/dy|), kGlintMinFootprintSigma) texels, i.e. the Gaussian
-// truncated at 3 sigma_p spans 3 pixels along the longer axis of the pixel's footprint; the floor keeps at least
-// one texel centre in any footprint (magnification shows the blend of the nearest elements).
+// isotropic: sigma_p = max(max(|du/dx|, |du/dy|) / sqrt(12), kGlintMinFootprintSigma) texels: the standard
+// deviation of a one-pixel box along the footprint's longer axis (the variance of the box-filtered pixel the
+// reference resolves with many rays), so the Gaussian truncated at 3 sigma_p spans 1.7 pixels; the floor keeps
+// at least one texel centre in any footprint (magnification shows the blend of the nearest elements).
 #pragma once
 
 #include <cstdint>
