@@ -34,6 +34,8 @@ std::unique_ptr<Command> make_gen_command();
 std::unique_ptr<Command> make_mip_command();
 std::unique_ptr<Command> make_lut_command();
 std::unique_ptr<Command> make_rmq_command();
+std::unique_ptr<Command> make_colormap_command();
+std::unique_ptr<Command> make_moments_command();
 std::unique_ptr<Command> make_bake_command();
 std::unique_ptr<Command> make_render_command();
 std::unique_ptr<Command> make_compare_command();

@@ -1,7 +1,7 @@
 // `microbake bake SCENE.json [--out-dir DIR]`: bakes exactly the assets the scene's effects call for, each
 // once even when several materials share it (libbake/scene/bake_plan.h), into the asset folder (default
 // <scene folder>/<scene stem>.assets, where `render` looks). An existing file that records the same input
-// content hash, convention, repair policy and parameters is skipped; any other is rebuilt
+// content hashes, conventions, repair policy and parameters is skipped; any other is rebuilt
 // (libbake/scene/asset_freshness.h). Prints what it baked, rebuilt and skipped, and why.
 #include <iostream>
 
@@ -41,12 +41,15 @@ class BakeCommand : public Command {
     const bool text = options_.format == OutputFormat::text && !options_.run.quiet;
     nlohmann::json report = {
         {"scene", options_.scene}, {"asset_folder", folder.string()}, {"assets", nlohmann::json::array()}};
-    for (const PlannedAsset& a : plan) {
-      std::error_code ec;
-      if (!std::filesystem::is_regular_file(a.input.path, ec))
-        throw Error(ExitCode::io_failure, "normal map of material '" + a.uses.front().material + "' not found",
-                    a.input.path.string());
-    }
+    for (const PlannedAsset& a : plan)
+      for (const BakeInput& in : a.recipe.inputs) {
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(in.path, ec))
+          throw Error(ExitCode::io_failure,
+                      std::string(in.normal_map ? "normal map" : "input file") + " of material '" +
+                          a.uses.front().material + "' (effect '" + a.uses.front().effect + "') not found",
+                      in.path.string());
+      }
     if (plan.empty()) {
       if (text)
         std::cout << "nothing to bake: no material in " << options_.scene << " names an effect that needs an asset\n";
@@ -59,24 +62,26 @@ class BakeCommand : public Command {
     progress.start("bake", plan.size());
     for (const PlannedAsset& a : plan) {
       const std::filesystem::path file = folder / a.file_name;
-      const AssetFreshness fresh = check_asset_freshness(a, file, file_content_hash(a.input.path));
+      const AssetFreshness fresh = check_asset_freshness(a, file);
       std::string action = "skipped";
       if (fresh.state != AssetState::up_to_date) {
-        const LoadedNormalMap map = load_normal_map(a.input.path, a.input.load_options());
-        OutputOption{file.string()}.write_bytes(a.recipe->bake(map).serialize());
+        // The bar counts assets; a long bake inside one asset stays quiet.
+        OutputOption{file.string()}.write_bytes(a.recipe.bake(Progress::silent()).serialize());
         action = fresh.state == AssetState::missing ? "baked" : "rebuilt";
       }
       progress.advance();
       nlohmann::json uses = nlohmann::json::array();
       for (const auto& u : a.uses) uses.push_back({{"material", u.material}, {"effect", u.effect}});
+      nlohmann::json inputs = nlohmann::json::array();
+      for (const BakeInput& in : a.recipe.inputs) inputs.push_back(in.path.string());
       report["assets"].push_back({{"file", file.string()},
-                                  {"kind", a.recipe->kind},
-                                  {"input", a.input.path.string()},
+                                  {"kind", a.recipe.kind},
+                                  {"inputs", inputs},
                                   {"action", action},
                                   {"reason", fresh.reason},
                                   {"uses", uses}});
       if (text)
-        std::cout << action << " " << a.file_name << " (" << a.recipe->kind << ", used by " << uses_text(a)
+        std::cout << action << " " << a.file_name << " (" << a.recipe.kind << ", used by " << uses_text(a)
                   << "): " << fresh.reason << "\n";
     }
     progress.finish();

@@ -22,6 +22,12 @@ std::vector<CommandEntry> command_table() {
       {"lut", "Bake an example's standardization LUTs for histogram-preserving glints (asset kind lut)",
        make_lut_command},
       {"rmq", "Bake an example's RMQ min/max table for glint range queries (asset kind rmq)", make_rmq_command},
+      {"colormap", "Bake a colour map prefiltered with Gaussians, indexed by (mean, sigma) (asset kind colormap)",
+       make_colormap_command},
+      {"moments",
+       "Bake the MIP pyramid of (f, f^2) of a driver image for footprint mean and variance (asset kind "
+       "moments)",
+       make_moments_command},
       {"bake", "Bake the assets a scene's effects need, skipping up-to-date ones", make_bake_command},
       {"render", "Render a scene with the reference shader evaluator (or its brute-force --reference)",
        make_render_command},

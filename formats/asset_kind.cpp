@@ -4,7 +4,7 @@
 namespace mbk {
 
 std::span<const AssetKind> asset_kinds() {
-  static const std::vector<AssetKind> kKinds = {mip_kind(), lut_kind(), rmq_kind()};
+  static const std::vector<AssetKind> kKinds = {mip_kind(), lut_kind(), rmq_kind(), colormap_kind(), moments_kind()};
   return kKinds;
 }
 

@@ -44,5 +44,7 @@ const AssetKind* find_kind(std::string_view name);
 AssetKind mip_kind();
 AssetKind lut_kind();
 AssetKind rmq_kind();
+AssetKind colormap_kind();
+AssetKind moments_kind();
 
 }  // namespace mbk

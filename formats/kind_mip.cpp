@@ -7,6 +7,7 @@
 #include "formats/asset.h"
 #include "formats/asset_kind.h"
 #include "formats/mip_levels.h"
+#include "formats/pyramid_levels.h"
 
 namespace mbk {
 namespace {
@@ -31,28 +32,9 @@ void check_mip(const Asset& a, std::vector<Finding>& out) {
     out.push_back(make_finding(msg::mip_bad_parameters, "zero width or height"));
     return;
   }
-  std::vector<std::vector<float>> levels;
-  for (size_t k = 0; k < sizes.size(); ++k) {
-    const SectionInfo* s = a.find(level_name(k));
-    if (!s || s->type != ElementType::f32 || s->shape != std::vector<uint64_t>{sizes[k].height, sizes[k].width, 3}) {
-      out.push_back(make_finding(msg::mip_level_shape, "'" + level_name(k) + "' should be f32 [" +
-                                                           std::to_string(sizes[k].height) + ", " +
-                                                           std::to_string(sizes[k].width) + ", 3]"));
-      return;
-    }
-    levels.push_back(a.read<float>(level_name(k)));
-  }
-  if (a.find(level_name(sizes.size()))) {
-    out.push_back(make_finding(msg::mip_level_shape, "more levels than a " + std::to_string(sizes[0].width) + "x" +
-                                                         std::to_string(sizes[0].height) + " image has"));
-    return;
-  }
-  for (size_t k = 0; k < levels.size(); ++k)
-    for (size_t i = 0; i < levels[k].size(); ++i)
-      if (!std::isfinite(levels[k][i])) {
-        out.push_back(make_finding(msg::mip_non_finite, level_name(k) + " element " + std::to_string(i)));
-        return;
-      }
+  const auto read = read_pyramid_levels(a, sizes, 3, msg::mip_level_shape, msg::mip_non_finite, out);
+  if (!read) return;
+  const std::vector<std::vector<float>>& levels = *read;
   const uint32_t W = sizes[0].width, H = sizes[0].height;
   const std::vector<float>& finest = levels[0];
   for (size_t k = 0; k < levels.size(); ++k) {
@@ -73,12 +55,7 @@ void check_mip(const Asset& a, std::vector<Finding>& out) {
         }
         if (k == 0) continue;
         // The texel is the area-weighted mean of level 0 over its rectangle.
-        double mean[3] = {0, 0, 0};
-        for (const MipWeight& fy : wy[y])
-          for (const MipWeight& fx : wx[x]) {
-            const float* f = &finest[(size_t(fy.index) * W + fx.index) * 3];
-            for (int c = 0; c < 3; ++c) mean[c] += fy.weight * fx.weight * f[c];
-          }
+        const std::vector<double> mean = level0_mean(finest, W, 3, wx[x], wy[y]);
         for (int c = 0; c < 3; ++c)
           if (std::abs(mean[c] - n[c]) > kMeanTolerance) {
             out.push_back(make_finding(msg::mip_parent_not_mean, at + ": channel " + std::to_string(c) + " is " +
@@ -98,10 +75,7 @@ AssetKind mip_kind() {
   k.name = "mip";
   k.summary = "MIP pyramid of a normal map (unnormalised mean normals per level)";
   k.required_sections = {{"level_0", {ElementType::f32}, 3}};
-  k.knows_section = [](const std::string& name) {
-    if (name.rfind("level_", 0) != 0 || name.size() == 6) return false;
-    return name.find_first_not_of("0123456789", 6) == std::string::npos;
-  };
+  k.knows_section = is_level_section_name;
   k.check_invariants = check_mip;
   return k;
 }

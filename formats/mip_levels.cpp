@@ -37,4 +37,9 @@ std::vector<std::vector<MipWeight>> mip_texel_weights(uint32_t level_extent, uin
   return texels;
 }
 
+bool is_level_section_name(const std::string& name) {
+  if (name.rfind("level_", 0) != 0 || name.size() == 6) return false;
+  return name.find_first_not_of("0123456789", 6) == std::string::npos;
+}
+
 }  // namespace mbk

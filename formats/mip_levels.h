@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace mbk {
@@ -30,5 +31,8 @@ struct MipWeight {
 // Error(runtime_failure)): per level texel, the finest texels it overlaps in increasing order with their
 // weights. The mean of texel (i, j) is sum over x-list(i), y-list(j) of weight_x weight_y finest(x, y).
 std::vector<std::vector<MipWeight>> mip_texel_weights(uint32_t level_extent, uint32_t extent);
+
+// Whether `name` is "level_<k>" for a decimal k: the section names of every pyramid kind (mip, moments).
+bool is_level_section_name(const std::string& name);
 
 }  // namespace mbk

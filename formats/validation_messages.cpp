@@ -71,6 +71,19 @@ std::span<const MessageInfo> all_messages() {
       rmq_bad_range,
       rmq_min_above_max,
       rmq_not_nested,
+      colormap_non_finite,
+      colormap_bad_parameters,
+      colormap_section_shape,
+      colormap_bad_knots,
+      colormap_row0_not_map,
+      colormap_outside_hull,
+      colormap_not_convolution,
+      moments_non_finite,
+      moments_bad_parameters,
+      moments_level_shape,
+      moments_level0_not_square,
+      moments_negative_variance,
+      moments_parent_not_mean,
   };
   return kAll;
 }

@@ -111,6 +111,33 @@ inline constexpr MessageInfo rmq_bad_range{13003, Severity::error, "rmq: quantiz
 inline constexpr MessageInfo rmq_min_above_max{13004, Severity::error, "rmq: an entry's min is above its max"};
 inline constexpr MessageInfo rmq_not_nested{13005, Severity::error,
                                             "rmq: an entry does not contain its four children of the level below"};
+// 17xxx: kind 7, `colormap` (prefiltered colour-map tables)
+inline constexpr MessageInfo colormap_non_finite{17001, Severity::error, "colormap: non-finite value"};
+inline constexpr MessageInfo colormap_bad_parameters{
+    17002, Severity::error,
+    "colormap: parameters missing or out of range (width, height in 2..8192, mean_min < mean_max, sigma_max > 0)"};
+inline constexpr MessageInfo colormap_section_shape{17003, Severity::error,
+                                                    "colormap: section shape does not match the parameters"};
+inline constexpr MessageInfo colormap_bad_knots{17004, Severity::error,
+                                                "colormap: knots decrease, or more than two knots share a position"};
+inline constexpr MessageInfo colormap_row0_not_map{17005, Severity::error,
+                                                   "colormap: the sigma = 0 row is not the colour map itself"};
+inline constexpr MessageInfo colormap_outside_hull{
+    17006, Severity::error, "colormap: entry outside the colour map's range (a Gaussian average cannot leave it)"};
+inline constexpr MessageInfo colormap_not_convolution{
+    17007, Severity::error, "colormap: entry differs from the Gaussian convolution of the colour map"};
+// 18xxx: kind 8, `moments` (moment pyramids of drivers)
+inline constexpr MessageInfo moments_non_finite{18001, Severity::error, "moments: non-finite value"};
+inline constexpr MessageInfo moments_bad_parameters{
+    18002, Severity::error, "moments: parameters missing or inconsistent (width, height, levels, finite shift)"};
+inline constexpr MessageInfo moments_level_shape{18003, Severity::error,
+                                                 "moments: level sizes do not follow the halving rule"};
+inline constexpr MessageInfo moments_level0_not_square{
+    18004, Severity::error, "moments: a finest texel's second moment is not the square of its first"};
+inline constexpr MessageInfo moments_negative_variance{18005, Severity::error,
+                                                       "moments: a texel's second moment is below its mean squared"};
+inline constexpr MessageInfo moments_parent_not_mean{18006, Severity::error,
+                                                     "moments: texel is not the mean of the finest texels it covers"};
 }  // namespace msg
 
 // All of the above, for documentation and the uniqueness test.

@@ -1,5 +1,6 @@
-// Where each material's shading normal comes from. The tangent-space normal looked up here is turned into
-// world space by the surface frame (surface_frame.h) and renormalised.
+// The normal lookups of the baseline and of the `mip` effect (material_shaders.h picks one per material).
+// The tangent-space normal looked up here is turned into world space by the surface frame (surface_frame.h)
+// and renormalised.
 //   no normal map         (0, 0, 1): the geometric normal
 //   baseline (no effect)  plain MIP-mapped normal mapping: the pyramid is built in memory from the
 //                         material's map (libbake/image/normal_pyramid.h), looked up trilinearly at the
@@ -9,20 +10,12 @@
 //                         tracing many sub-pixel rays instead
 // A filtered mean normal can vanish where opposite normals cancel (a symmetric V-groove averaged over its
 // period); it then falls back to (0, 0, 1) (covered by MaterialNormals.CancellingNormalsFallBackToZ).
-//
-// Assets: a material's effects are looked up in the bake plan (libbake/scene/bake_plan.h) inside the asset
-// folder. A missing asset is Error(io_failure) pointing at `microbake bake`; an asset that no longer matches
-// its normal map (when the map is present to compare) is Error(invalid_input), likewise.
 #pragma once
 
-#include <filesystem>
-#include <map>
 #include <memory>
-#include <string>
 
 #include "libbake/eval/uv_footprint.h"
 #include "libbake/image/normal_pyramid.h"
-#include "libbake/scene/scene.h"
 
 namespace mbk {
 
@@ -34,11 +27,5 @@ struct MaterialNormals {
   // The unit tangent-space normal at uv for a pixel footprint.
   Vec3 lookup(const Vec2& uv, const UvFootprint& footprint) const;
 };
-
-enum class NormalSource { effects, reference };
-
-// One entry per material of the scene. Maps and assets shared by several materials are loaded once.
-std::map<std::string, MaterialNormals> load_material_normals(const Scene& scene, NormalSource source,
-                                                             const std::filesystem::path& asset_folder);
 
 }  // namespace mbk

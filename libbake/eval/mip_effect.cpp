@@ -4,6 +4,7 @@
 #include "formats/asset.h"
 #include "formats/error.h"
 #include "formats/mip_levels.h"
+#include "libbake/eval/material_normals.h"
 
 namespace mbk {
 
@@ -37,6 +38,17 @@ NormalPyramid load_mip_asset(const std::filesystem::path& file) {
     pyramid.levels.push_back(std::move(level));
   }
   return pyramid;
+}
+
+ShaderPtr mip_effect_shader(const EffectShaderRequest& request) {
+  if (request.mode == EvalMode::reference) return request.base;
+  const std::filesystem::path& file = request.assets.at(0);
+  MaterialNormals normals;
+  normals.filter = NormalFilter::trilinear;
+  normals.pyramid =
+      request.cache.get<NormalPyramid>("mip asset|" + file.string(), [&] { return load_mip_asset(file); });
+  return std::make_shared<NormalMappedShader>(
+      [normals](const Vec2& uv, const UvFootprint& f) { return normals.lookup(uv, f); });
 }
 
 }  // namespace mbk

@@ -8,6 +8,7 @@
 
 #include <filesystem>
 
+#include "libbake/eval/effect_shaders.h"
 #include "libbake/image/normal_pyramid.h"
 
 namespace mbk {
@@ -15,5 +16,8 @@ namespace mbk {
 // Opens and checks a mip asset (kind, level count and shapes from its parameters). Error: io_failure when
 // unreadable, invalid_input when it is not a well-formed mip asset.
 NormalPyramid load_mip_asset(const std::filesystem::path& file);
+
+// Filtered: a NormalMappedShader sampling the asset trilinearly. Reference: `base` (the raw map).
+ShaderPtr mip_effect_shader(const EffectShaderRequest& request);
 
 }  // namespace mbk

@@ -17,7 +17,7 @@ namespace {
 // What shading needs per shape, resolved once instead of per sample.
 struct ShapeShading {
   Brdf brdf;
-  const MaterialNormals* normals;
+  const MaterialShader* shader;
 };
 
 Vec3 radiance_along(const Scene& scene, const std::vector<ShapeShading>& shading, const SceneLighting& lighting,
@@ -26,10 +26,9 @@ Vec3 radiance_along(const Scene& scene, const std::vector<ShapeShading>& shading
   if (!hit) return background(lighting, r.ray.direction);
   const ShapeShading& s = shading[hit->shape];
   const Vec3 to_viewer = -r.ray.direction;
-  const SurfaceFrame frame = surface_frame(*hit, to_viewer);
-  const Vec3 tangent_normal = s.normals->lookup(hit->uv, uv_footprint(*hit, r));
-  const ShadingPoint point{hit->p, frame.N, frame.to_world(tangent_normal).normalized(), to_viewer};
-  return shade(lighting, s.brdf, point);
+  const ShadingContext context{hit->p,    hit->uv,  uv_footprint(*hit, r), surface_frame(*hit, to_viewer),
+                               to_viewer, &lighting};
+  return s.shader->radiance(context, s.brdf);
 }
 
 }  // namespace
@@ -38,8 +37,8 @@ RenderInputs load_render_inputs(const Scene& scene, const RenderSettings& settin
   RenderInputs inputs;
   inputs.lighting = load_scene_lighting(scene);
   const auto folder = settings.asset_folder.empty() ? default_asset_folder(scene) : settings.asset_folder;
-  inputs.normals =
-      load_material_normals(scene, settings.reference > 0 ? NormalSource::reference : NormalSource::effects, folder);
+  inputs.shaders =
+      load_material_shaders(scene, settings.reference > 0 ? EvalMode::reference : EvalMode::filtered, folder);
   return inputs;
 }
 
@@ -50,10 +49,10 @@ Image render_scene(const Scene& scene, const RenderInputs& inputs, const RenderS
   if (grid.count() == 0) throw Error(ExitCode::bad_command_line, "samples per pixel must be at least 1");
   std::vector<ShapeShading> shading;
   for (const Shape& shape : scene.shapes) {
-    const auto it = inputs.normals.find(shape.material);
-    if (it == inputs.normals.end())
-      throw Error(ExitCode::runtime_failure, "internal: no normals loaded for material '" + shape.material + "'");
-    shading.push_back({Brdf::of(scene.materials.at(shape.material)), &it->second});
+    const auto it = inputs.shaders.find(shape.material);
+    if (it == inputs.shaders.end())
+      throw Error(ExitCode::runtime_failure, "internal: no shader for material '" + shape.material + "'");
+    shading.push_back({Brdf::of(scene.materials.at(shape.material)), it->second.get()});
   }
   Image image;
   image.width = camera.width();

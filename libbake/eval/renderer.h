@@ -1,16 +1,17 @@
 // The reference shader evaluator's main loop: for every pixel, stratified sub-pixel rays (pixel_samples.h)
 // from the pinhole camera with their ray differentials (camera_rays.h) are cast at the shapes
-// (shape_intersection.h); at each hit the material's normal is looked up for the pixel's uv footprint
-// (uv_footprint.h, material_normals.h), turned into world space by the tangent frame (surface_frame.h) and
-// shaded by the scene's lights (scene_lighting.h); the pixel is the mean of its samples (a box filter).
+// (shape_intersection.h); at each hit the material's shader (material_shaders.h) shades the point for the
+// pixel's uv footprint (uv_footprint.h) in the tangent frame (surface_frame.h) under the scene's lights
+// (scene_lighting.h); the pixel is the mean of its samples (a box filter).
 //
-// Two modes share every line of this loop and differ only in where normals come from and how many rays a
+// Two modes share every line of this loop and differ only in how shaders are built and how many rays a
 // pixel gets:
-//   render      `spp` rays per pixel; each material's effects (or the baseline) filter its normals for the
-//               whole pixel's footprint: a sample's footprint is the pixel's, not spp times smaller, as a
+//   render      `spp` rays per pixel; each material's effects (or the baseline) filter over the whole
+//               pixel's footprint: a sample's footprint is the pixel's, not spp times smaller, as a
 //               rasteriser's derivatives are;
-//   reference   N x N rays per pixel, normals unfiltered (bilinear in the raw map's level 0): the brute-force
-//               ground truth every technique is compared with. No assets are read.
+//   reference   N x N rays per pixel, every effect's ground truth unfiltered (the baseline: bilinear in the
+//               raw map's level 0): the brute-force image every technique is compared with. No assets are
+//               read.
 // Pixels are written independently (parallel_for over rows), so the image does not depend on --threads.
 #pragma once
 
@@ -19,7 +20,7 @@
 #include <string>
 
 #include "libbake/core/progress.h"
-#include "libbake/eval/material_normals.h"
+#include "libbake/eval/material_shaders.h"
 #include "libbake/eval/scene_lighting.h"
 #include "libbake/image/image_io.h"
 #include "libbake/scene/scene.h"
@@ -32,10 +33,10 @@ struct RenderSettings {
   std::filesystem::path asset_folder;  // where effects' assets are; empty: default_asset_folder(scene)
 };
 
-// What a render reads from disk: projected distant lighting and each material's normals.
+// What a render reads from disk: projected distant lighting and each material's shader.
 struct RenderInputs {
   SceneLighting lighting;
-  std::map<std::string, MaterialNormals> normals;
+  std::map<std::string, ShaderPtr> shaders;
 };
 
 RenderInputs load_render_inputs(const Scene& scene, const RenderSettings& settings);

@@ -147,4 +147,14 @@ void save_image(const std::filesystem::path& path, const Image& image, const Ima
   if (!ok) throw Error(ExitCode::io_failure, "cannot write image: " + one_line(out->geterror()), path.string());
 }
 
+ImageHeader read_image_header_within(const std::filesystem::path& path, uint32_t max_side, const std::string& what) {
+  const ImageHeader header = read_image_header(path);
+  if (header.width > max_side || header.height > max_side)
+    throw Error(ExitCode::invalid_input,
+                what + " is " + std::to_string(header.width) + "x" + std::to_string(header.height) +
+                    " texels; each side may be at most " + std::to_string(max_side),
+                path.string());
+  return header;
+}
+
 }  // namespace mbk

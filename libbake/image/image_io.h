@@ -37,6 +37,9 @@ struct ImageHeader {
   ImageFileInfo info;
 };
 ImageHeader read_image_header(const std::filesystem::path& path);
+// read_image_header, then Error(invalid_input) "<what> is WxH texels; each side may be at most <max_side>" when a
+// side is larger, so that callers enforce their size limit before allocating.
+ImageHeader read_image_header_within(const std::filesystem::path& path, uint32_t max_side, const std::string& what);
 
 // How save_image stores pixels. PNG: 8 or 16 bits (values clamped to [0, 1], rounded to the nearest code,
 // NaN stored as 0); EXR: half or float (linear, unclamped). Other extensions OpenImageIO supports (TIFF,

@@ -131,12 +131,7 @@ nlohmann::json normal_map_conventions() {
 
 LoadedNormalMap load_normal_map(const std::filesystem::path& path, const NormalMapLoadOptions& options) {
   const std::string where = path.string();
-  const ImageHeader header = read_image_header(path);
-  if (header.width > kMaxNormalMapSide || header.height > kMaxNormalMapSide)
-    throw Error(ExitCode::invalid_input,
-                "normal map is " + std::to_string(header.width) + "x" + std::to_string(header.height) +
-                    " texels; each side may be at most " + std::to_string(kMaxNormalMapSide),
-                where);
+  const ImageHeader header = read_image_header_within(path, kMaxNormalMapSide, "normal map");
   if (header.info.file_channels == 1)
     throw Error(ExitCode::invalid_input,
                 "one-channel image: this looks like a height map, not a normal map (convert it to normals first)",

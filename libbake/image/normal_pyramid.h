@@ -1,6 +1,7 @@
-// The MIP pyramid of a normal map: level 0 the unit normals, level k the unnormalised mean of the finest
-// normals each texel covers (formats/mip_levels.h gives sizes and coverage). The mean's length is below 1
-// where normals disagree; Toksvig-style roughening reads it. Means accumulate in double.
+// The MIP pyramid of a normal map (the box pyramid of box_pyramid.h on the three components): level 0 the unit
+// normals, level k the unnormalised mean of the finest normals each texel covers (formats/mip_levels.h gives
+// sizes and coverage). The mean's length is below 1 where normals disagree; Toksvig-style roughening reads it.
+// Means accumulate in double.
 #pragma once
 
 #include <vector>

@@ -13,8 +13,7 @@ std::string text_of(const nlohmann::json& v) { return v.is_string() ? v.get<std:
 
 }  // namespace
 
-AssetFreshness check_asset_freshness(const PlannedAsset& planned, const std::filesystem::path& file,
-                                     const std::string& input_hash) {
+AssetFreshness check_asset_freshness(const PlannedAsset& planned, const std::filesystem::path& file) {
   std::error_code ec;
   if (!std::filesystem::exists(file, ec)) return {AssetState::missing, "no file yet"};
   std::optional<Asset> asset;
@@ -23,7 +22,7 @@ AssetFreshness check_asset_freshness(const PlannedAsset& planned, const std::fil
   } catch (const Error& e) {
     return stale("existing file is not a valid asset: " + std::string(e.what()));
   }
-  const AssetRecipe& recipe = *planned.recipe;
+  const AssetRecipe& recipe = planned.recipe;
   if (asset->kind().name != recipe.kind)
     return stale("existing file is a '" + std::string(asset->kind().name) + "' asset, not '" + recipe.kind + "'");
 
@@ -33,20 +32,30 @@ AssetFreshness check_asset_freshness(const PlannedAsset& planned, const std::fil
     return stale("baked by microbake " + baked_by + ", this is " + std::string(MICROBAKE_VERSION));
 
   const nlohmann::json& inputs = asset->metadata()["inputs"];
-  if (!inputs.is_array() || inputs.size() != 1 || !inputs[0].is_object())
-    return stale("existing file does not record exactly one input");
-  const nlohmann::json& in = inputs[0];
-  const nlohmann::json recorded_hash = in.value("content_hash", nlohmann::json());
-  if (recorded_hash != input_hash)
-    return stale("input changed (recorded " + text_of(recorded_hash) + ", now " + input_hash + ")");
-  const std::string convention = convention_name(planned.input.convention);
-  if (in.value("convention", nlohmann::json()) != convention)
-    return stale("normal-map convention changed (recorded " + text_of(in.value("convention", nlohmann::json())) +
-                 ", now " + convention + ")");
-  const std::string policy = planned.input.repair ? "repair" : "error";
-  if (in.value("invalid_policy", nlohmann::json()) != policy)
-    return stale("invalid-texel policy changed (recorded " + text_of(in.value("invalid_policy", nlohmann::json())) +
-                 ", now " + policy + ")");
+  if (!inputs.is_array() || inputs.size() != recipe.inputs.size())
+    return stale("existing file records " + std::to_string(inputs.is_array() ? inputs.size() : 0) +
+                 " inputs, the effect bakes from " + std::to_string(recipe.inputs.size()));
+  std::string hashes;
+  for (size_t i = 0; i < inputs.size(); ++i) {
+    const BakeInput& planned_in = recipe.inputs[i];
+    const nlohmann::json in = inputs[i].is_object() ? inputs[i] : nlohmann::json::object();
+    if (!std::filesystem::exists(planned_in.path, ec)) continue;
+    const std::string now = file_content_hash(planned_in.path);
+    hashes += (hashes.empty() ? "" : ", ") + now;
+    const nlohmann::json recorded_hash = in.value("content_hash", nlohmann::json());
+    if (recorded_hash != now)
+      return stale("input " + planned_in.path.filename().string() + " changed (recorded " + text_of(recorded_hash) +
+                   ", now " + now + ")");
+    if (!planned_in.normal_map) continue;
+    const std::string convention = convention_name(planned_in.normal_map->convention);
+    if (in.value("convention", nlohmann::json()) != convention)
+      return stale("normal-map convention changed (recorded " + text_of(in.value("convention", nlohmann::json())) +
+                   ", now " + convention + ")");
+    const std::string policy = planned_in.normal_map->repair ? "repair" : "error";
+    if (in.value("invalid_policy", nlohmann::json()) != policy)
+      return stale("invalid-texel policy changed (recorded " + text_of(in.value("invalid_policy", nlohmann::json())) +
+                   ", now " + policy + ")");
+  }
 
   const nlohmann::json& params = asset->metadata()["parameters"];
   for (auto it = recipe.parameters.begin(); it != recipe.parameters.end(); ++it) {
@@ -55,7 +64,8 @@ AssetFreshness check_asset_freshness(const PlannedAsset& planned, const std::fil
       return stale("parameter '" + it.key() + "' changed (recorded " + recorded.dump() + ", now " + it.value().dump() +
                    ")");
   }
-  return {AssetState::up_to_date, "up to date (input " + input_hash + ", same parameters)"};
+  return {AssetState::up_to_date,
+          "up to date (input " + (hashes.empty() ? "not present" : hashes) + ", same parameters)"};
 }
 
 }  // namespace mbk

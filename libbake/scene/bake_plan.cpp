@@ -38,31 +38,33 @@ std::vector<PlannedAsset> plan_assets(const Scene& scene) {
   std::vector<PlannedAsset> plan;
   std::map<std::string, size_t> index_of_request;  // dedup key -> index in plan
   for (const auto& [name, material] : scene.materials) {
-    for (const std::string& effect_name : material.effects) {
-      const EffectInfo* effect = find_effect(effect_name);
-      for (const AssetRecipe& recipe : effect->assets) {
-        const NormalMapRef& map = *material.normal_map;  // scene parsing requires a map for every effect
-        std::error_code ec;
-        fs::path canonical = fs::weakly_canonical(map.path, ec);
-        if (ec) canonical = fs::absolute(map.path).lexically_normal();
-        const nlohmann::json request = {{"kind", recipe.kind},
-                                        {"parameters", recipe.parameters},
-                                        {"convention", convention_name(map.convention)},
-                                        {"repair", map.repair}};
-        const std::string key = request.dump() + "\n" + canonical.generic_string();
+    for (const EffectUse& use : material.effects) {
+      for (AssetRecipe& recipe : find_effect(use.name)->assets(material, use)) {
+        // Two requests are the same asset when everything but where the files are written down agrees.
+        nlohmann::json request = {{"kind", recipe.kind}, {"parameters", recipe.parameters}};
+        nlohmann::json canonical_inputs = nlohmann::json::array(), named_inputs = nlohmann::json::array();
+        for (const BakeInput& in : recipe.inputs) {
+          nlohmann::json how = nlohmann::json::object();
+          if (in.normal_map)
+            how = {{"convention", convention_name(in.normal_map->convention)}, {"repair", in.normal_map->repair}};
+          std::error_code ec;
+          fs::path canonical = fs::weakly_canonical(in.path, ec);
+          if (ec) canonical = fs::absolute(in.path).lexically_normal();
+          canonical_inputs.push_back({{"file", canonical.generic_string()}, {"read_as", how}});
+          named_inputs.push_back({{"file", scene_relative(scene, in.path)}, {"read_as", how}});
+        }
+        const std::string key = request.dump() + "\n" + canonical_inputs.dump();
         auto [it, inserted] = index_of_request.emplace(key, plan.size());
         if (inserted) {
-          nlohmann::json named = request;
-          named["input"] = scene_relative(scene, map.path);
-          const std::string text = named.dump();
+          request["inputs"] = named_inputs;
+          const std::string text = request.dump();
           PlannedAsset a;
-          a.recipe = &recipe;
-          a.input = map;
-          a.file_name =
-              file_stem_for(map.path) + "." + recipe.kind + "." + hex8(checksum_of(text.data(), text.size())) + ".mbk";
+          a.file_name = file_stem_for(recipe.inputs.empty() ? fs::path("asset") : recipe.inputs.front().path) + "." +
+                        recipe.kind + "." + hex8(checksum_of(text.data(), text.size())) + ".mbk";
+          a.recipe = std::move(recipe);
           plan.push_back(std::move(a));
         }
-        plan[it->second].uses.push_back({name, effect_name});
+        plan[it->second].uses.push_back({name, use.name});
       }
     }
   }

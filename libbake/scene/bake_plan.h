@@ -1,9 +1,10 @@
 // Planning what to bake for a scene: every (material, effect) pair asks the effect registry for its
-// assets; identical requests (same kind, parameters, normal map file, convention and repair policy) are
-// merged, so an asset shared by several materials is baked and loaded once. Each planned asset gets a
-// stable file name inside the asset folder, `<map stem>.<kind>.<8 hex>.mbk`, where the hex digits hash the
-// request (kind, parameters, the map's path relative to the scene folder, convention, repair): the same
-// scene always names the same files, and different requests never share one.
+// assets; identical requests (same kind, parameters and input files, and for normal-map inputs the same
+// convention and repair policy) are merged, so an asset shared by several materials is baked and loaded
+// once. Each planned asset gets a stable file name inside the asset folder, `<first input's stem>.<kind>.
+// <8 hex>.mbk`, where the hex digits hash the request (kind, parameters, the inputs' paths relative to the
+// scene folder, conventions, repair): the same scene always names the same files, and different requests
+// never share one.
 //
 // The asset folder defaults to `<scene folder>/<scene stem>.assets/` (scenes/demo.json ->
 // scenes/demo.assets/); `bake --out-dir` and `render --assets` override it, and must then agree.
@@ -25,8 +26,7 @@ struct AssetUse {
 };
 
 struct PlannedAsset {
-  const AssetRecipe* recipe = nullptr;  // in effect_registry()
-  NormalMapRef input;
+  AssetRecipe recipe;
   std::string file_name;
   std::vector<AssetUse> uses;  // in material-name order, then effect order
 };

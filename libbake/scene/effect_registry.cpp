@@ -1,16 +1,10 @@
 // The effects materials may name, and the assets each needs (see effect_registry.h).
 #include "libbake/scene/effect_registry.h"
 
-#include "libbake/image/mip_asset.h"
-
 namespace mbk {
 
 std::span<const EffectInfo> effect_registry() {
-  static const std::vector<EffectInfo> effects = {
-      {"mip",
-       "shade from the baked MIP pyramid of the normal map (the baseline, shipped as an asset)",
-       {{"mip", nlohmann::json::object(), [](const LoadedNormalMap& map) { return bake_mip_asset(map); }}}},
-  };
+  static const std::vector<EffectInfo> effects = {mip_effect()};
   return effects;
 }
 
@@ -25,5 +19,7 @@ std::string known_effect_names() {
   for (const auto& e : effect_registry()) names += (names.empty() ? "" : ", ") + e.name;
   return names;
 }
+
+BakeInput normal_map_input(const Material& material) { return {material.normal_map->path, material.normal_map}; }
 
 }  // namespace mbk

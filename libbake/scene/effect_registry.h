@@ -1,11 +1,17 @@
-// The registry of effects a material can name in its `effects` list. Each effect declares the assets it
-// needs baked from the material's normal map: the asset kind (formats/asset_kind.h), its canonical bake
-// parameters (recorded in the asset's metadata and compared by `bake` to decide whether a file is up to
-// date) and the libbake function that bakes it. A technique registers its effect with one entry in
-// effect_registry() (effect_registry.cpp) and one evaluator hook in libbake/eval/material_normals.cpp.
+// The registry of effects a material can name in its `effects` list. Each effect declares:
+//   - its scene options (parse_options: reads an effect object's keys other than "name", rejects unknown
+//     ones, fills defaults; nullptr when the effect has none and may only be named as a string);
+//   - whether it needs the material's normal map;
+//   - the assets it needs baked for one material (assets): per asset, the kind (formats/asset_kind.h),
+//     the canonical bake parameters and the input files, which `bake` compares with a file's metadata to
+//     decide whether it is up to date (asset_freshness.h), and the function that bakes it.
+// An effect lives in libbake/scene/effect_<name>.cpp (its `<name>_effect()`), listed once in
+// effect_registry.cpp; its evaluator side is registered in libbake/eval/effect_shaders.cpp.
 #pragma once
 
+#include <filesystem>
 #include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -14,25 +20,43 @@
 #include <nlohmann/json.hpp>
 
 #include "formats/asset_writer.h"
-#include "libbake/image/normal_map.h"
+#include "libbake/core/progress.h"
+#include "libbake/scene/effect_use.h"
+#include "libbake/scene/json_fields.h"
+#include "libbake/scene/scene.h"
 
 namespace mbk {
 
+// A file an asset is baked from.
+struct BakeInput {
+  std::filesystem::path path;              // resolved
+  std::optional<NormalMapRef> normal_map;  // set when read as a normal map: convention and policy matter too
+};
+
 struct AssetRecipe {
-  std::string kind;           // an asset kind name
-  nlohmann::json parameters;  // canonical parameters (an object; {} when the bake has no knobs)
-  std::function<AssetWriter(const LoadedNormalMap&)> bake;
+  std::string kind;                            // an asset kind name
+  nlohmann::json parameters;                   // canonical bake parameters (an object; {} without knobs)
+  std::vector<BakeInput> inputs;               // recorded in the asset's "inputs", in this order
+  std::function<AssetWriter(Progress&)> bake;  // reads `inputs` and bakes; throws Error
 };
 
 struct EffectInfo {
   std::string name;
   std::string summary;
-  std::vector<AssetRecipe> assets;  // baked from the material's normal map, in this order
+  bool needs_normal_map = true;
+  std::function<EffectUse(JsonObjectReader& options, const std::filesystem::path& scene_folder)> parse_options;
+  std::function<std::vector<AssetRecipe>(const Material&, const EffectUse&)> assets;
 };
 
 std::span<const EffectInfo> effect_registry();
 const EffectInfo* find_effect(std::string_view name);
 // "mip, ..." for error messages.
 std::string known_effect_names();
+
+// The normal map of a material as a bake input (for effects that bake from it).
+BakeInput normal_map_input(const Material& material);
+
+// The effects, one file each.
+EffectInfo mip_effect();
 
 }  // namespace mbk

@@ -81,11 +81,36 @@ NormalMapRef parse_normal_map(JsonObjectReader r, const fs::path& folder) {
   m.path_as_written = json_string(r.required("path"), r.child("path"));
   if (m.path_as_written.empty()) fail("empty path", r.child("path"));
   m.path = resolve(folder, m.path_as_written);
-  if (const auto* v = r.optional("convention"))
-    m.convention = parse_convention(json_choice(*v, r.child("convention"), {"+Y", "-Y"}));
+  if (const auto* v = r.optional("convention")) {
+    // The same names as the commands' --convention: +Y/opengl or -Y/directx, any case.
+    const std::string name = json_string(*v, r.child("convention"));
+    try {
+      m.convention = parse_convention(name);
+    } catch (const Error& e) {
+      fail(e.what(), r.child("convention"));
+    }
+  }
   if (const auto* v = r.optional("repair")) m.repair = json_bool(*v, r.child("repair"));
   r.reject_unknown_keys();
   return m;
+}
+
+// One entry of a material's `effects`: a name, or an object with "name" and the effect's options.
+EffectUse parse_effect(const nlohmann::json& v, const std::string& at, const Material& m, const fs::path& folder) {
+  static const nlohmann::json kNoOptions = nlohmann::json::object();
+  JsonObjectReader options(v.is_object() ? v : kNoOptions, at);
+  const std::string name =
+      v.is_object() ? json_string(options.required("name"), options.child("name")) : json_string(v, at);
+  const EffectInfo* effect = find_effect(name);
+  if (!effect) fail("unknown effect '" + name + "' (known effects: " + known_effect_names() + ")", at);
+  for (const auto& e : m.effects)
+    if (e.name == name) fail("effect '" + name + "' is listed twice", at);
+  if (effect->needs_normal_map && !m.normal_map) fail("effect '" + name + "' needs a normal_map in this material", at);
+  EffectUse use;
+  if (effect->parse_options) use = effect->parse_options(options, folder);
+  options.reject_unknown_keys();  // an effect without parse_options takes no options
+  use.name = name;
+  return use;
 }
 
 Material parse_material(const std::string& name, JsonObjectReader r, const fs::path& folder) {
@@ -106,17 +131,9 @@ Material parse_material(const std::string& name, JsonObjectReader r, const fs::p
     m.normal_map = parse_normal_map(JsonObjectReader(*v, r.child("normal_map")), folder);
   if (const auto* v = r.optional("effects")) {
     const std::string path = r.child("effects");
-    if (!v->is_array()) fail("expected an array of effect names", path);
-    for (size_t i = 0; i < v->size(); ++i) {
-      const std::string at = json_index_path(path, i);
-      const std::string effect = json_string((*v)[i], at);
-      if (!find_effect(effect))
-        fail("unknown effect '" + effect + "' (known effects: " + known_effect_names() + ")", at);
-      for (const auto& e : m.effects)
-        if (e == effect) fail("effect '" + effect + "' is listed twice", at);
-      if (!m.normal_map) fail("effect '" + effect + "' needs a normal_map in this material", at);
-      m.effects.push_back(effect);
-    }
+    if (!v->is_array()) fail("expected an array of effects (names or {\"name\": ..., options} objects)", path);
+    for (size_t i = 0; i < v->size(); ++i)
+      m.effects.push_back(parse_effect((*v)[i], json_index_path(path, i), m, folder));
   }
   r.reject_unknown_keys();
   return m;

@@ -21,6 +21,7 @@
 
 #include "libbake/core/eigen.h"
 #include "libbake/image/normal_map.h"
+#include "libbake/scene/effect_use.h"
 
 namespace mbk {
 
@@ -62,7 +63,7 @@ struct Material {
   double roughness = 0.5;          // the microfacet alpha itself (no perceptual remapping)
   Vec3 f0 = Vec3::Constant(0.04);  // Fresnel reflectance at normal incidence (Schlick's approximation)
   std::optional<NormalMapRef> normal_map;
-  std::vector<std::string> effects;  // names registered in libbake/scene/effect_registry.h
+  std::vector<EffectUse> effects;  // registered in libbake/scene/effect_registry.h, in the order listed
 };
 
 struct PointLight {

@@ -11,6 +11,7 @@
 #include "formats/error.h"
 #include "libbake/core/parallel.h"
 #include "libbake/eval/image_difference.h"
+#include "libbake/eval/material_normals.h"
 #include "libbake/eval/renderer.h"
 #include "libbake/eval/surface_frame.h"
 #include "libbake/scene/bake_plan.h"
@@ -32,8 +33,7 @@ json material(const std::string& map, const std::vector<std::string>& effects, d
 void bake_scene(const Scene& scene) {
   std::filesystem::create_directories(default_asset_folder(scene));
   for (const PlannedAsset& a : plan_assets(scene))
-    a.recipe->bake(load_normal_map(a.input.path, a.input.load_options()))
-        .write(default_asset_folder(scene) / a.file_name);
+    a.recipe.bake(Progress::silent()).write(default_asset_folder(scene) / a.file_name);
 }
 
 Image render(const Scene& scene, uint32_t spp, uint32_t reference = 0) {
@@ -145,6 +145,11 @@ TEST(Renderer, StaleAssetIsRefused) {
     EXPECT_EQ(e.code(), ExitCode::invalid_input);
     EXPECT_NE(std::string(e.what()).find("out of date"), std::string::npos) << e.what();
   }
+}
+
+TEST(EffectShaders, EveryRegisteredEffectHasAShader) {
+  for (const EffectInfo& e : effect_registry()) EXPECT_NE(find_effect_shader(e.name), nullptr) << e.name;
+  for (const EffectShaderEntry& s : effect_shaders()) EXPECT_NE(find_effect(s.effect), nullptr) << s.effect;
 }
 
 TEST(MaterialNormals, CancellingNormalsFallBackToZ) {

@@ -36,27 +36,29 @@ inline double overlap_length(double a, double b, double c, double d) {
   return std::max(0.0, std::min(b, d) - std::max(a, c));
 }
 
-// Level k texel (i, j) = area-weighted mean of the finest texels over its rectangle
+// Level k texel (i, j) = area-weighted mean (per channel; 3 for normals) of the finest texels over its rectangle
 // [i W / w_k, (i+1) W / w_k) x [j H / h_k, (j+1) H / h_k), by brute force: every finest texel, weighted by the
 // area of its square's overlap with the rectangle.
-inline std::vector<std::vector<float>> brute_force_pyramid(const std::vector<float>& level0, uint32_t w, uint32_t h) {
+inline std::vector<std::vector<float>> brute_force_pyramid(const std::vector<float>& level0, uint32_t w, uint32_t h,
+                                                           uint32_t channels = 3) {
   std::vector<std::vector<float>> levels;
   auto sizes = mip_level_sizes(w, h);
   for (size_t k = 0; k < sizes.size(); ++k) {
     const uint32_t lw = sizes[k].width, lh = sizes[k].height;
     const double tx = double(w) / lw, ty = double(h) / lh;  // texel size in finest texels
-    std::vector<float> L(size_t(lw) * lh * 3);
+    std::vector<float> L(size_t(lw) * lh * channels);
     for (uint32_t j = 0; j < lh; ++j)
       for (uint32_t i = 0; i < lw; ++i) {
-        double s[3] = {0, 0, 0}, area = 0;
+        std::vector<double> s(channels, 0.0);
+        double area = 0;
         for (uint32_t y = 0; y < h; ++y)
           for (uint32_t x = 0; x < w; ++x) {
             const double a =
                 overlap_length(i * tx, (i + 1) * tx, x, x + 1.0) * overlap_length(j * ty, (j + 1) * ty, y, y + 1.0);
             area += a;
-            for (int c = 0; c < 3; ++c) s[c] += a * level0[(size_t(y) * w + x) * 3 + c];
+            for (uint32_t c = 0; c < channels; ++c) s[c] += a * level0[(size_t(y) * w + x) * channels + c];
           }
-        for (int c = 0; c < 3; ++c) L[(size_t(j) * lw + i) * 3 + c] = float(s[c] / area);
+        for (uint32_t c = 0; c < channels; ++c) L[(size_t(j) * lw + i) * channels + c] = float(s[c] / area);
       }
     levels.push_back(std::move(L));
   }

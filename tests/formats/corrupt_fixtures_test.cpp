@@ -12,7 +12,9 @@
 #include "formats/asset.h"
 #include "formats/validate.h"
 #include "tests/formats/asset_fixtures.h"
+#include "tests/formats/colormap_fixtures.h"
 #include "tests/formats/lut_fixtures.h"
+#include "tests/formats/moments_fixtures.h"
 #include "tests/formats/rmq_fixtures.h"
 
 namespace mbk {
@@ -329,6 +331,21 @@ std::vector<CorruptCase> corrupt_cases() {
        [] { return test::rmq_with_code(0, 4, 2, 0, [](uint16_t, uint16_t max) { return uint16_t(max + 1); }); }},
       {"RmqParentMissesAChild", 13005,
        [] { return test::rmq_with_code(1, 0, 0, 2, [](uint16_t min, uint16_t) { return uint16_t(min + 1); }); }},
+      {"ColormapNonFinite", 17001, [] { return test::colormap_with_value(2, 7, std::nanf("")); }},
+      {"ColormapSigmaMaxZero", 17002, [] { return test::colormap_with_parameter("sigma_max", 0.0); }},
+      {"ColormapTableShapeDisagreesWithWidth", 17003, [] { return test::colormap_with_parameter("width", 6); }},
+      {"ColormapKnotsDecrease", 17004, [] { return test::colormap_with_value(0, 1, -0.1f); }},
+      {"ColormapRow0NotTheMap", 17005, [] { return test::colormap_with_table_delta(0, 2, 0, 0.01f); }},
+      {"ColormapEntryAboveTheMapsMax", 17006, [] { return test::colormap_with_value(2, (2 * 5 + 2) * 3, 1.5f); }},
+      {"ColormapEntryNotTheConvolution", 17007, [] { return test::colormap_with_table_delta(2, 2, 0, -0.001f); }},
+      {"MomentsNonFinite", 18001, [] { return test::moments_with_element(1, 1, [](float) { return std::nanf(""); }); }},
+      {"MomentsShiftNotANumber", 18002, [] { return test::moments_with_parameter("shift", "0.25"); }},
+      {"MomentsLevelShapeDisagreesWithWidth", 18003, [] { return test::moments_with_parameter("width", 6); }},
+      {"MomentsLevel0SecondNotSquare", 18004,
+       [] { return test::moments_with_element(0, 3, [](float m2) { return m2 * 1.01f + 1e-3f; }); }},
+      {"MomentsNegativeVariance", 18005, [] { return test::moments_with_element(1, 1, [](float) { return 0.0f; }); }},
+      {"MomentsParentNotMean", 18006,
+       [] { return test::moments_with_element(1, 1, [](float m2) { return m2 + 0.01f; }); }},
   };
 }
 

@@ -79,12 +79,32 @@ TEST(SceneFile, FullSceneParsesWithEveryValue) {
   ASSERT_TRUE(brick.normal_map);
   EXPECT_EQ(brick.normal_map->convention, YConvention::minus_y);
   EXPECT_TRUE(brick.normal_map->repair);
-  EXPECT_EQ(brick.effects, std::vector<std::string>{"mip"});
+  ASSERT_EQ(brick.effects.size(), 1u);
+  EXPECT_EQ(brick.effects[0].name, "mip");
+  EXPECT_EQ(brick.effects[0].options, json::object());
   EXPECT_EQ(s.materials.at("plain").albedo, Vec3::Constant(0.8));
   EXPECT_EQ(s.lights.points.size(), 1u);
   EXPECT_EQ(s.lights.directionals[0].irradiance, Vec3::Constant(2));
   EXPECT_DOUBLE_EQ(s.lights.environments[0].scale, 0.5);
   EXPECT_EQ(s.lights.skies[0].radiance, Vec3(0.1, 0.2, 0.3));
+}
+
+TEST(SceneFile, ConventionNamesAreTheCommandLines) {
+  for (const auto& [name, expected] : std::vector<std::pair<std::string, YConvention>>{
+           {"DirectX", YConvention::minus_y}, {"-y", YConvention::minus_y}, {"OpenGL", YConvention::plus_y}}) {
+    json j = full_scene();
+    j["materials"]["brick"]["normal_map"]["convention"] = name;
+    EXPECT_EQ(parse_scene(j, "/scenes").materials.at("brick").normal_map->convention, expected) << name;
+  }
+}
+
+TEST(SceneFile, EffectMayBeAnObjectWithItsName) {
+  json j = full_scene();
+  j["materials"]["brick"]["effects"] = json::array({{{"name", "mip"}}});
+  const Scene scene = parse_scene(j, "/scenes");
+  const Material& m = scene.materials.at("brick");
+  ASSERT_EQ(m.effects.size(), 1u);
+  EXPECT_EQ(m.effects[0].name, "mip");
 }
 
 TEST(SceneFile, DefaultsApplyToOmittedKeys) {
@@ -163,9 +183,14 @@ TEST(SceneFile, RejectsWrongTypesAndRangesWithTheirPaths) {
       {"/materials/brick/albedo", json::array({0.5, 1.5, 0}), "materials.brick.albedo[1]", "outside"},
       {"/materials/brick/specular/roughness", 0, "materials.brick.specular.roughness", "outside"},
       {"/materials/brick/specular/distribution", "phong", "materials.brick.specular.distribution", "beckmann, ggx"},
-      {"/materials/brick/normal_map/convention", "+Z", "materials.brick.normal_map.convention", "+Y, -Y"},
+      {"/materials/brick/normal_map/convention", "+Z", "materials.brick.normal_map.convention",
+       "+Y/opengl or -Y/directx"},
       {"/materials/brick/normal_map/repair", "yes", "materials.brick.normal_map.repair", "true or false"},
-      {"/materials/brick/effects", json::array({"glints"}), "materials.brick.effects[0]", "known effects: mip"},
+      {"/materials/brick/effects", json::array({"sparkles"}), "materials.brick.effects[0]", "known effects: mip"},
+      {"/materials/brick/effects", json::array({{{"name", "mip"}, {"levels", 3}}}), "materials.brick.effects[0].levels",
+       "unknown key"},
+      {"/materials/brick/effects", json::array({json::object()}), "materials.brick.effects[0].name", "missing"},
+      {"/materials/brick/effects", json::array({json::array()}), "materials.brick.effects[0]", "string"},
       {"/materials/brick/effects", json::array({"mip", "mip"}), "materials.brick.effects[1]", "twice"},
       {"/materials/brick/effects", "mip", "materials.brick.effects", "array"},
       {"/materials/plain/effects", json::array({"mip"}), "materials.plain.effects[0]", "needs a normal_map"},

@@ -1,0 +1,21 @@
+// The table of effect shaders (see effect_shaders.h).
+#include "libbake/eval/effect_shaders.h"
+
+#include "libbake/eval/mip_effect.h"
+
+namespace mbk {
+
+std::span<const EffectShaderEntry> effect_shaders() {
+  static const std::vector<EffectShaderEntry> shaders = {
+      {"mip", mip_effect_shader},
+  };
+  return shaders;
+}
+
+const EffectShaderFactory* find_effect_shader(std::string_view effect) {
+  for (const auto& s : effect_shaders())
+    if (s.effect == effect) return &s.make;
+  return nullptr;
+}
+
+}  // namespace mbk
