@@ -1,6 +1,7 @@
 // The table of effect shaders (see effect_shaders.h).
 #include "libbake/eval/effect_shaders.h"
 
+#include "libbake/eval/glints_effect.h"
 #include "libbake/eval/mip_effect.h"
 
 namespace mbk {
@@ -8,6 +9,7 @@ namespace mbk {
 std::span<const EffectShaderEntry> effect_shaders() {
   static const std::vector<EffectShaderEntry> shaders = {
       {"mip", mip_effect_shader},
+      {"glints", glints_effect_shader},
   };
   return shaders;
 }

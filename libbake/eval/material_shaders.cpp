@@ -47,7 +47,8 @@ std::vector<std::filesystem::path> effect_asset_files(const Scene& scene, const 
     const std::string context =
         planned->recipe.kind + " asset of effect '" + effect + "' for material '" + m.name + "'";
     const AssetFreshness f = check_asset_freshness(*planned, file);
-    if (f.state == AssetState::missing) throw Error(ExitCode::io_failure, context + " is missing: " + bake, file.string());
+    if (f.state == AssetState::missing)
+      throw Error(ExitCode::io_failure, context + " is missing: " + bake, file.string());
     if (f.state == AssetState::stale)
       throw Error(ExitCode::invalid_input, context + " is out of date (" + f.reason + "): " + bake, file.string());
     files.push_back(file);

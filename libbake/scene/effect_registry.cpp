@@ -4,7 +4,7 @@
 namespace mbk {
 
 std::span<const EffectInfo> effect_registry() {
-  static const std::vector<EffectInfo> effects = {mip_effect()};
+  static const std::vector<EffectInfo> effects = {mip_effect(), glints_effect()};
   return effects;
 }
 

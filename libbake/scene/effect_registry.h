@@ -58,5 +58,6 @@ BakeInput normal_map_input(const Material& material);
 
 // The effects, one file each.
 EffectInfo mip_effect();
+EffectInfo glints_effect();
 
 }  // namespace mbk
