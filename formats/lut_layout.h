@@ -1,6 +1,6 @@
 // The layout and lookup convention of asset kind 2, `lut` (standardization LUTs; formats/SPEC.md "Kind 2: lut"),
 // shared by the baker (libbake/glint/standardization_sampling.h), the evaluator's lookups
-// (libbake/glint/lut_lookup.h) and `validate` (formats/kind_lut.cpp), so that all three agree to the bit.
+// (formats/lut_lookup.h) and `validate` (formats/kind_lut.cpp), so that all three agree to the bit.
 //
 // Per channel c (0 = n_x, 1 = n_y) a lut asset holds two tables of `size` samples each:
 // - forward:  G   on the example's value range [x_lo, x_hi] (values are Gaussian z),

@@ -1,6 +1,7 @@
 // The table of effect shaders (see effect_shaders.h).
 #include "libbake/eval/effect_shaders.h"
 
+#include "libbake/eval/glints_effect.h"
 #include "libbake/eval/colormap_effect.h"
 #include "libbake/eval/mip_effect.h"
 
@@ -9,6 +10,7 @@ namespace mbk {
 std::span<const EffectShaderEntry> effect_shaders() {
   static const std::vector<EffectShaderEntry> shaders = {
       {"mip", mip_effect_shader},
+      {"glints", glints_effect_shader},
       {"colormap", colormap_effect_shader},
       {"colormap-height", colormap_height_effect_shader},
       {"colormap-slope", colormap_slope_effect_shader},

@@ -53,13 +53,18 @@ Vec3 schlick_fresnel(const Vec3& f0, double cos_d) {
 }
 
 Vec3 evaluate_specular(const Brdf& b, const Vec3& n, const Vec3& l, const Vec3& v) {
+  return evaluate_specular(b, n, l, v, [&](const Vec3& h) { return microfacet_d(b.lobe, n.dot(h)); });
+}
+
+Vec3 evaluate_specular(const Brdf& b, const Vec3& n, const Vec3& l, const Vec3& v,
+                       const std::function<double(const Vec3& h)>& distribution) {
   const double cl = n.dot(l), cv = n.dot(v);
   if (!(cl > 0.0 && cv > 0.0)) return Vec3::Zero();
   const Vec3 sum = l + v;
   const double len = sum.norm();
   if (!(len > 0.0)) return Vec3::Zero();  // l = -v cannot happen with both above the horizon; kept for NaN inputs
   const Vec3 h = sum / len;
-  const double d = microfacet_d(b.lobe, n.dot(h));
+  const double d = distribution(h);
   const double g = smith_g2(b.lobe, cl, cv);
   return schlick_fresnel(b.f0, v.dot(h)) * (d * g / (4.0 * cl * cv));
 }

@@ -17,6 +17,8 @@
 // Directions are unit vectors pointing away from the surface; f is 0 when l or v is below the horizon of n.
 #pragma once
 
+#include <functional>
+
 #include "libbake/core/eigen.h"
 #include "libbake/scene/scene.h"
 
@@ -46,5 +48,9 @@ struct Brdf {
 Vec3 evaluate_brdf(const Brdf& brdf, const Vec3& n, const Vec3& l, const Vec3& v);
 // The specular term alone (the diffuse one is albedo / pi wherever both directions are above the horizon).
 Vec3 evaluate_specular(const Brdf& brdf, const Vec3& n, const Vec3& l, const Vec3& v);
+// The same with another distribution: D(h) from `d` (given the unit half vector h) in place of the lobe's, G2
+// and F as above (e.g. a glint P-NDF, libbake/glint/glint_pndf.h, under the lobe's masking-shadowing).
+Vec3 evaluate_specular(const Brdf& brdf, const Vec3& n, const Vec3& l, const Vec3& v,
+                       const std::function<double(const Vec3& h)>& d);
 
 }  // namespace mbk

@@ -26,7 +26,7 @@
 
 #include "libbake/core/eigen.h"
 #include "libbake/glint/example_bilinear.h"
-#include "libbake/glint/standardization_lut.h"
+#include "formats/standardization_lut.h"
 #include "libbake/glint/target_patch_grid.h"
 #include "libbake/image/normal_map.h"
 
@@ -42,6 +42,8 @@ class GlintPointQuery {
   GlintPointQuery(const NormalMap& example, uint32_t patch_side, uint32_t seed, GlintBlendMode mode,
                   const StandardizationLut* lut = nullptr);
 
+  const NormalMap& example() const { return *example_; }
+  const StandardizationLut* lut() const { return lut_; }
   const TargetPatchGrid& grid() const { return grid_; }
   GlintBlendMode mode() const { return mode_; }
   const Vec2& example_mean() const { return mean_; }  // (mean n_x, mean n_y) over the example's texels

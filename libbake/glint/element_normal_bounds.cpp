@@ -8,7 +8,7 @@
 
 namespace mbk {
 
-NormalBounds element_normal_bounds(const NormalMap& example, uint32_t x, uint32_t row) {
+RmqBounds element_normal_bounds(const NormalMap& example, uint32_t x, uint32_t row) {
   const Mat2 j = example_jacobian(example, x, row);
   constexpr double kReach = kGlintSpatialCutoffSigmas * kGlintElementSigmaTexels;  // 3 sigma_h, in texels
   const double rx = (std::abs(j(0, 0)) + std::abs(j(0, 1))) * kReach;

@@ -17,14 +17,12 @@
 
 #include <cstdint>
 
+#include "formats/rmq_query.h"
 #include "libbake/image/normal_map.h"
 
 namespace mbk {
 
-struct NormalBounds {
-  double min_x, max_x, min_y, max_y;
-};
-
-NormalBounds element_normal_bounds(const NormalMap& example, uint32_t x, uint32_t row);
+// The interval of n_x and n_y (the same bounds type as an RMQ query's answer).
+RmqBounds element_normal_bounds(const NormalMap& example, uint32_t x, uint32_t row);
 
 }  // namespace mbk

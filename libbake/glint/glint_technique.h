@@ -17,10 +17,10 @@
 // - Standardization LUTs (`microbake lut`, asset kind `lut`, id 2): standard_normal.h (exact Phi and
 //   Phi^-1), empirical_standardization.h (the exact transform G of one channel and its inverse),
 //   standardization_sampling.h (G^-1 sampled into a table, the forward table as the exact inverse of its
-//   interpolant, and both derivative tables), lut_lookup.h (the one lookup convention, over plain arrays: what
-//   the evaluator uses), standardization_lut.h (the tables of an asset, as the evaluator reads them),
-//   lut_asset.h (the bake); the layout and the sample positions live in formats/lut_layout.h, shared with
-//   `validate`.
+//   interpolant, and both derivative tables), lut_asset.h (the bake). What reads the asset lives in formats/,
+//   the one home of evaluator-side lookups (a renderer needs formats/ only): formats/lut_layout.h (layout and
+//   sample positions, shared with `validate`), formats/lut_lookup.h (the one lookup convention, over plain
+//   arrays), formats/standardization_lut.h (the tables of an asset, as the evaluator reads them).
 // - RMQ min/max tables (`microbake rmq`, asset kind `rmq`, id 3; [Wang20] Sec. 4.4, 5.1, Alg. 1-2):
 //   example_jacobian.h (the per-texel Jacobian), element_normal_bounds.h (leaf intervals: the element's
 //   reach), rmq_table.h (the sparse table, quantized; its deviations), rmq_asset.h (the bake); the layout, the
@@ -32,7 +32,14 @@
 //   border, with its exact derivative), blended_normal.h (GlintPointQuery: n(u) and its analytic Jacobian for
 //   the blend modes none, linear, variance and histogram, including the derivatives of the weights, of W and
 //   of the LUTs).
-// - Not yet: range queries of the blend, the P-NDF and its sampling.
+// - Range query ([Wang20] Sec. 4.3-4.5): blended_range.h (conservative bounds of the blended normal over a
+//   node of target texels from the four example patches' RMQ ranges pushed through the monotone blend, the
+//   weights and W = ||w|| bounded over the whole node; and each target texel's exact element bounds).
+// - P-NDF ([Wang20] Eqs. 1-3, Alg. 3, Sec. 5.2-5.3): position_normal_element.h (one element through a Gaussian
+//   footprint in closed form, its mass, a sample), glint_pndf.h (D_P by traversal, by brute force, and
+//   importance sampling; its truncation rules), glint_surface_mapping.h (uv and pixel footprints to the target
+//   plane, with the v flip: target u_1 runs down the rows, tangent +v up), glint_surface.h (a glint material
+//   assembled from the example and its two assets read through formats/: what the evaluator's shaders call).
 //
 // Conventions shared by every glint table (they all describe the same example; the evaluator reads them all):
 // - The example is a NormalMap (libbake/image/normal_map.h: +Y, row 0 at the top, texel (x, row)). Glints use

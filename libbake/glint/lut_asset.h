@@ -10,7 +10,7 @@
 
 #include "formats/asset_writer.h"
 #include "libbake/core/progress.h"
-#include "libbake/glint/standardization_lut.h"
+#include "formats/standardization_lut.h"
 #include "libbake/image/normal_map.h"
 
 namespace mbk {

@@ -28,7 +28,7 @@ std::array<RmqRange, 2> leaf_range(const NormalMap& example, Progress& progress)
   parallel_for(0, example.height, [&](int64_t row) {
     RowRange& r = rows[row];
     for (uint32_t x = 0; x < example.width; ++x) {
-      const NormalBounds b = element_normal_bounds(example, x, uint32_t(row));
+      const RmqBounds b = element_normal_bounds(example, x, uint32_t(row));
       r.lo_x = std::min(r.lo_x, b.min_x), r.hi_x = std::max(r.hi_x, b.max_x);
       r.lo_y = std::min(r.lo_y, b.min_y), r.hi_y = std::max(r.hi_y, b.max_y);
     }
@@ -64,7 +64,7 @@ RmqLeafStatistics quantize_leaves(const NormalMap& example, RmqTable& t, Progres
   parallel_for(0, L.height, [&](int64_t row) {
     RowLeafSums& s = rows[row];
     for (uint32_t x = 0; x < L.width; ++x) {
-      const NormalBounds b = element_normal_bounds(example, x, uint32_t(row));
+      const RmqBounds b = element_normal_bounds(example, x, uint32_t(row));
       const double ends[4] = {b.min_x, b.max_x, b.min_y, b.max_y};
       uint32_t codes[4];
       for (int c = 0; c < 4; ++c) {

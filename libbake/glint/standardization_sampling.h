@@ -38,7 +38,7 @@
 #include <cstdint>
 
 #include "libbake/glint/empirical_standardization.h"
-#include "libbake/glint/standardization_lut.h"
+#include "formats/standardization_lut.h"
 
 namespace mbk {
 

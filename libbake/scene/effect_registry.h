@@ -58,6 +58,7 @@ BakeInput normal_map_input(const Material& material);
 
 // The effects, one file each.
 EffectInfo mip_effect();
+EffectInfo glints_effect();
 EffectInfo colormap_effect();         // effect_colormap.cpp
 EffectInfo colormap_height_effect();  // effect_colormap.cpp
 EffectInfo colormap_slope_effect();   // effect_colormap.cpp

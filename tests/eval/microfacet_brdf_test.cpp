@@ -139,3 +139,22 @@ TEST(MicrofacetBrdf, SchlickFresnelEndpoints) {
 
 }  // namespace
 }  // namespace mbk
+
+namespace mbk {
+namespace {
+
+// The overload with a given distribution (used by glints) is the same formula: with the lobe's own D it gives
+// the same value, and it is linear in D.
+TEST(MicrofacetBrdf, SpecularWithAGivenDistributionIsTheSameFormula) {
+  const Brdf b{Vec3(0.5, 0.5, 0.5), Vec3(0.04, 0.5, 0.9), {Distribution::beckmann, 0.3}};
+  const Vec3 n(0, 0, 1), l = Vec3(0.3, 0.1, 0.9).normalized(), v = Vec3(-0.2, 0.25, 0.8).normalized();
+  const Vec3 lobe = evaluate_specular(b, n, l, v);
+  const Vec3 given = evaluate_specular(b, n, l, v, [&](const Vec3& h) { return microfacet_d(b.lobe, n.dot(h)); });
+  EXPECT_EQ(lobe, given);
+  const Vec3 twice = evaluate_specular(b, n, l, v, [&](const Vec3& h) { return 2.0 * microfacet_d(b.lobe, n.dot(h)); });
+  EXPECT_NEAR((twice - 2.0 * lobe).norm(), 0.0, 1e-12 * lobe.norm());
+  EXPECT_EQ(evaluate_specular(b, n, Vec3(0, 0, -1), v, [](const Vec3&) { return 1.0; }), Vec3::Zero());
+}
+
+}  // namespace
+}  // namespace mbk

@@ -14,6 +14,7 @@
 #include "formats/lut_layout.h"
 #include "libbake/core/progress.h"
 #include "libbake/gen/generator.h"
+#include "libbake/glint/glint_surface.h"
 #include "libbake/glint/blended_normal.h"
 #include "libbake/glint/lut_asset.h"
 
@@ -22,19 +23,6 @@ namespace {
 
 constexpr std::array<GlintBlendMode, 4> kModes = {GlintBlendMode::none, GlintBlendMode::linear,
                                                   GlintBlendMode::variance, GlintBlendMode::histogram};
-const char* mode_name(GlintBlendMode m) {
-  switch (m) {
-    case GlintBlendMode::none:
-      return "none";
-    case GlintBlendMode::linear:
-      return "linear";
-    case GlintBlendMode::variance:
-      return "variance";
-    case GlintBlendMode::histogram:
-      return "histogram";
-  }
-  return "?";
-}
 
 struct Fixture {
   NormalMap example = generate_normal_map("bumps", {128, 128}, 4, Progress::silent());
@@ -111,13 +99,13 @@ TEST(GlintPointQuery, JacobianMatchesCentralDifferencesAwayFromKinks_AllModes) {
       // Relative to the Jacobian's size, floored at 1e-6 (flat spots of the example: there both are ~0).
       const double rel = (fd - s.jacobian).norm() / std::max(s.jacobian.norm(), 1e-6);
       worst = std::max(worst, rel);
-      ASSERT_LE(rel, 1e-3) << mode_name(mode) << " at u = " << u.transpose() << "\nJ =\n"
+      ASSERT_LE(rel, 1e-3) << glint_blend_mode_name(mode) << " at u = " << u.transpose() << "\nJ =\n"
                            << s.jacobian << "\nFD =\n"
                            << fd;
     }
-    EXPECT_LT(rejected, used) << mode_name(mode) << ": too many points near kinks";
-    std::printf("[ info ] %s: %d points, %d near kinks skipped, worst relative error %.3g\n", mode_name(mode), used,
-                rejected, worst);
+    EXPECT_LT(rejected, used) << glint_blend_mode_name(mode) << ": too many points near kinks";
+    std::printf("[ info ] %s: %d points, %d near kinks skipped, worst relative error %.3g\n",
+                glint_blend_mode_name(mode), used, rejected, worst);
   }
 }
 
@@ -153,7 +141,7 @@ TEST(GlintPointQuery, SmoothBlendsAreContinuousAcrossTargetPatchBorders) {
       const double y = along(rng);
       const NormalSample left = q.evaluate(Vec2(border - 1e-9, y)), right = q.evaluate(Vec2(border, y));
       // The corners that leave have weight 0 on the border; 1e-9 texels at slopes of O(1) moves n by ~1e-9.
-      EXPECT_NEAR((left.n - right.n).norm(), 0.0, 1e-7) << mode_name(mode) << " y = " << y;
+      EXPECT_NEAR((left.n - right.n).norm(), 0.0, 1e-7) << glint_blend_mode_name(mode) << " y = " << y;
     }
   }
 }
@@ -173,7 +161,7 @@ TEST(GlintPointQuery, SameSeedSameValuesOtherSeedOtherValues) {
       ASSERT_EQ(sa.jacobian, sb.jacobian);
       differ += c.evaluate(u).n != sa.n;
     }
-    EXPECT_GT(differ, 900) << mode_name(mode);
+    EXPECT_GT(differ, 900) << glint_blend_mode_name(mode);
   }
 }
 
@@ -186,9 +174,9 @@ TEST(GlintPointQuery, ConstantExampleGivesThatConstantWithZeroJacobian_AllModes)
     std::uniform_real_distribution<double> pos(-500.0, 500.0);
     for (int n = 0; n < 2000; ++n) {
       const NormalSample s = q.evaluate(Vec2(pos(rng), pos(rng)));
-      EXPECT_NEAR(s.n.x(), double(0.3f), 1e-12) << mode_name(mode);
-      EXPECT_NEAR(s.n.y(), double(-0.2f), 1e-12) << mode_name(mode);
-      EXPECT_LE(s.jacobian.cwiseAbs().maxCoeff(), 1e-12) << mode_name(mode);
+      EXPECT_NEAR(s.n.x(), double(0.3f), 1e-12) << glint_blend_mode_name(mode);
+      EXPECT_NEAR(s.n.y(), double(-0.2f), 1e-12) << glint_blend_mode_name(mode);
+      EXPECT_LE(s.jacobian.cwiseAbs().maxCoeff(), 1e-12) << glint_blend_mode_name(mode);
     }
   }
 }
@@ -279,9 +267,9 @@ TEST(GlintPointQuery, BlendsKeepTheStatisticsOfTheExampleAsRead) {
     if (mode == GlintBlendMode::variance) variance_expected = expected;
     for (int ch = 0; ch < 2; ++ch) {
       const double standard_error = s[ch] / std::sqrt(double(kPoints));
-      std::printf("[ info ] %s channel %d: mean %.5f, expected %.5f, standard error %.5f\n", mode_name(mode), ch, m[ch],
-                  expected[ch], standard_error);
-      EXPECT_NEAR(m[ch], expected[ch], 4 * standard_error) << mode_name(mode) << " channel " << ch;
+      std::printf("[ info ] %s channel %d: mean %.5f, expected %.5f, standard error %.5f\n",
+                  glint_blend_mode_name(mode), ch, m[ch], expected[ch], standard_error);
+      EXPECT_NEAR(m[ch], expected[ch], 4 * standard_error) << glint_blend_mode_name(mode) << " channel " << ch;
     }
   }
 }

@@ -58,7 +58,7 @@ TEST(ElementNormalBounds, SpreadIsJacobianTimesCutoff) {
   for (uint32_t row = 0; row < 5; ++row)
     for (uint32_t x = 0; x < 7; ++x) {
       const Mat2 j = example_jacobian(m, x, row);
-      const NormalBounds bounds = element_normal_bounds(m, x, row);
+      const RmqBounds bounds = element_normal_bounds(m, x, row);
       const double nx = m.at(x, row).x(), ny = m.at(x, row).y();
       const double rx = (std::abs(j(0, 0)) + std::abs(j(0, 1))) * reach;
       const double ry = (std::abs(j(1, 0)) + std::abs(j(1, 1))) * reach;
@@ -88,7 +88,7 @@ TEST(ElementNormalBounds, ConstantMapHasPointIntervals) {
   m.texels.assign(12, Vec3f(0.6f, -0.0f, 0.8f));
   for (uint32_t row = 0; row < 3; ++row)
     for (uint32_t x = 0; x < 4; ++x) {
-      const NormalBounds b = element_normal_bounds(m, x, row);
+      const RmqBounds b = element_normal_bounds(m, x, row);
       EXPECT_EQ(b.min_x, double(0.6f));
       EXPECT_EQ(b.max_x, double(0.6f));
       EXPECT_EQ(b.min_y, 0.0);

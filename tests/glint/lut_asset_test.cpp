@@ -9,7 +9,7 @@
 #include "libbake/core/parallel.h"
 #include "libbake/gen/generator.h"
 #include "libbake/glint/lut_asset.h"
-#include "libbake/glint/standardization_lut.h"
+#include "formats/standardization_lut.h"
 
 namespace mbk {
 namespace {

@@ -32,8 +32,8 @@ namespace {
 // The leaf intervals of every texel, read once.
 struct Leaves {
   uint32_t width, height;
-  std::vector<NormalBounds> b;
-  const NormalBounds& at(uint32_t x, uint32_t row) const { return b[size_t(row) * width + x]; }
+  std::vector<RmqBounds> b;
+  const RmqBounds& at(uint32_t x, uint32_t row) const { return b[size_t(row) * width + x]; }
 };
 
 Leaves leaves_of(const NormalMap& m) {
@@ -49,12 +49,12 @@ struct Rect {
 };
 
 // Min/max of the leaf intervals over [x, x + w) x [row, row + h) clipped to the map, texel by texel.
-NormalBounds brute_force(const Leaves& l, const Rect& r) {
+RmqBounds brute_force(const Leaves& l, const Rect& r) {
   constexpr double inf = std::numeric_limits<double>::infinity();
-  NormalBounds out{inf, -inf, inf, -inf};
+  RmqBounds out{inf, -inf, inf, -inf};
   for (uint32_t row = r.row; row < std::min(r.row + r.h, l.height); ++row)
     for (uint32_t x = r.x; x < std::min(r.x + r.w, l.width); ++x) {
-      const NormalBounds& b = l.at(x, row);
+      const RmqBounds& b = l.at(x, row);
       out.min_x = std::min(out.min_x, b.min_x), out.max_x = std::max(out.max_x, b.max_x);
       out.min_y = std::min(out.min_y, b.min_y), out.max_y = std::max(out.max_y, b.max_y);
     }
@@ -108,7 +108,7 @@ void check_rects(const RmqTable& t, const Leaves& l, const std::vector<Rect>& re
   const double quantum[2] = {t.range[0].quantum(bits), t.range[1].quantum(bits)};
   double slack_sum = 0;
   for (const Rect& r : rects) {
-    const NormalBounds truth = brute_force(l, r);
+    const RmqBounds truth = brute_force(l, r);
     const RmqCodes codes = view.query_codes(r.x, r.row, r.w, r.h);
     const RmqBounds got = view.dequantize(codes);
     const double truth_v[4] = {truth.min_x, truth.max_x, truth.min_y, truth.max_y};
@@ -216,7 +216,7 @@ TEST(RmqTable, EveryStoredSquareIsTheQuantizedClippedBruteForce) {
       for (uint32_t k = 0; k < t.layout.levels; ++k)
         for (uint32_t row = 0; row < h; ++row)
           for (uint32_t x = 0; x < w; ++x) {
-            const NormalBounds truth = brute_force(l, {x, row, 1u << k, 1u << k});
+            const RmqBounds truth = brute_force(l, {x, row, 1u << k, 1u << k});
             const RmqCodes e = view.entry(k, x, row);
             const std::string at = std::to_string(w) + "x" + std::to_string(h) + " level " + std::to_string(k) + " (" +
                                    std::to_string(x) + ", " + std::to_string(row) + ")";
@@ -231,7 +231,7 @@ TEST(RmqTable, EveryStoredSquareIsTheQuantizedClippedBruteForce) {
 
 TEST(RmqTable, RangeIsTheLeafIntervalsExtremes) {
   const NormalMap map = generate_normal_map("scratches", {90, 70}, 1, Progress::silent());
-  const NormalBounds all = brute_force(leaves_of(map), {0, 0, 90, 70});
+  const RmqBounds all = brute_force(leaves_of(map), {0, 0, 90, 70});
   const RmqTable t = build_rmq_table(map, 64, 16, Progress::silent());
   EXPECT_EQ(t.range[0].lo, all.min_x);
   EXPECT_EQ(t.range[0].hi, all.max_x);

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "formats/asset.h"
-#include "libbake/glint/lut_lookup.h"
+#include "formats/lut_lookup.h"
 
 namespace mbk {
 

@@ -1,5 +1,5 @@
 // The lookup convention of standardization tables (see lut_lookup.h).
-#include "libbake/glint/lut_lookup.h"
+#include "formats/lut_lookup.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-// The lookup convention of standardization tables (libbake/glint/lut_lookup.h, formats/lut_layout.h): samples at
+// The lookup convention of standardization tables (formats/lut_lookup.h, formats/lut_layout.h): samples at
 // lo + j (hi - lo) / (size - 1) come back exactly, linear in between with the interval's slope as derivative, and
 // every lookup outside [lo, hi] (or NaN, or infinite) clamps to an end sample with derivative 0.
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "formats/lut_layout.h"
-#include "libbake/glint/lut_lookup.h"
+#include "formats/lut_lookup.h"
 
 namespace mbk {
 namespace {

@@ -1,5 +1,5 @@
 // Reading the standardization tables of a `lut` asset (see standardization_lut.h).
-#include "libbake/glint/standardization_lut.h"
+#include "formats/standardization_lut.h"
 
 #include "formats/lut_layout.h"
 

@@ -1,0 +1,112 @@
+// The glint shaders (see glints_effect.h).
+#include "libbake/eval/glints_effect.h"
+
+#include <memory>
+#include <numbers>
+
+#include "formats/asset.h"
+#include "formats/error.h"
+#include "libbake/core/progress.h"
+#include "libbake/glint/glint_surface.h"
+#include "libbake/glint/glint_surface_mapping.h"
+#include "libbake/glint/lut_asset.h"
+
+namespace mbk {
+namespace {
+
+// D(s) at a shading point, s = (h_x, h_y) in the tangent frame.
+using GlintDistribution = std::function<double(const Vec2& s)>;
+using DistributionAt = std::function<GlintDistribution(const ShadingContext& c)>;
+
+class GlintShader : public MaterialShader {
+ public:
+  GlintShader(const Scene& scene, DistributionAt distribution)
+      : points_(scene.lights.points), directionals_(scene.lights.directionals), at_(std::move(distribution)) {}
+
+  Vec3 radiance(const ShadingContext& c, const Brdf& brdf) const override {
+    const Vec3& n = c.frame.N;
+    const Vec3& v = c.to_viewer;
+    SceneLighting distant = *c.lighting;  // the distant lighting alone, with the base roughness
+    distant.points.clear();
+    distant.directionals.clear();
+    Vec3 out = shade(distant, brdf, {c.position, n, n, v});
+    const GlintDistribution d = at_(c);
+    const auto direct = [&](const Vec3& l, const Vec3& e) {
+      const double cos_l = n.dot(l);
+      if (!(cos_l > 0.0) || !(n.dot(v) > 0.0)) return;
+      const Vec3 spec = evaluate_specular(brdf, n, l, v, [&](const Vec3& h) {
+        return d(Vec2(h.dot(c.frame.T), h.dot(c.frame.B)));
+      });
+      out += (brdf.albedo / std::numbers::pi + spec).cwiseProduct(e) * cos_l;
+    };
+    for (const PointLight& light : points_) {
+      const Vec3 to_light = light.position - c.position;
+      const double d2 = to_light.squaredNorm();
+      if (d2 > 0.0) direct(to_light / std::sqrt(d2), light.intensity / d2);
+    }
+    for (const DirectionalLight& light : directionals_) direct(-light.direction, light.irradiance);
+    return out;
+  }
+
+ private:
+  std::vector<PointLight> points_;
+  std::vector<DirectionalLight> directionals_;
+  DistributionAt at_;
+};
+
+GlintSettings settings_of(const EffectUse& use, const std::string& where) {
+  GlintSettings s;
+  s.mode = parse_glint_blend_mode(use.options.at("blending").get<std::string>(), where);
+  s.sigma_r = use.options.at("sigma_r");
+  s.patch = use.options.at("patch");
+  s.seed = use.options.at("seed");
+  return s;
+}
+
+}  // namespace
+
+ShaderPtr glints_effect_shader(const EffectShaderRequest& request) {
+  const std::string where = "materials." + request.material.name + ": glints";
+  if (!request.material.normal_map)
+    throw Error(ExitCode::invalid_input, "the glints effect needs the material's normal map", where);
+  const NormalMapRef& ref = *request.material.normal_map;
+  const auto example = request.cache.get<LoadedNormalMap>(
+      "glint example|" + ref.path.string(), [&] { return load_normal_map(ref.path, ref.load_options()); });
+  const GlintSettings settings = settings_of(request.use, where);
+  const uint32_t W = example->map.width, H = example->map.height;
+
+  if (request.mode == EvalMode::reference) {
+    // No assets: the exact example, standardized here when the blend needs it.
+    struct Reference {
+      std::shared_ptr<const LoadedNormalMap> example;
+      StandardizationLut lut;
+      std::unique_ptr<GlintPointQuery> point;
+    };
+    auto r = std::make_shared<Reference>();
+    r->example = example;
+    if (settings.mode == GlintBlendMode::histogram)
+      r->lut = bake_standardization_lut(example->map, 65536, Progress::silent()).tables;
+    r->point = std::make_unique<GlintPointQuery>(example->map, settings.patch, settings.seed, settings.mode, &r->lut);
+    const double sigma_r = settings.sigma_r;
+    return std::make_shared<GlintShader>(request.scene, [r, sigma_r, W, H](const ShadingContext& c) {
+      const Vec2 u = glint_target_point(c.uv, W, H);
+      return GlintDistribution([r, sigma_r, u](const Vec2& s) { return point_ndf(*r->point, u, sigma_r, s); });
+    });
+  }
+
+  struct Filtered {
+    std::shared_ptr<const LoadedNormalMap> example;
+    std::unique_ptr<GlintSurface> surface;
+  };
+  auto f = std::make_shared<Filtered>();
+  f->example = example;
+  f->surface = GlintSurface::open(example->map, Asset::open(request.assets.at(0)), Asset::open(request.assets.at(1)),
+                                  settings);
+  return std::make_shared<GlintShader>(request.scene, [f, W, H](const ShadingContext& c) {
+    const GlintFootprint fp = glint_pixel_footprint(c.uv, c.footprint.duv_dx, c.footprint.duv_dy, W, H);
+    if (!std::isfinite(fp.sigma)) return GlintDistribution([](const Vec2&) { return 0.0; });  // grazing
+    return GlintDistribution([f, fp](const Vec2& s) { return f->surface->ndf(fp, s, false); });
+  });
+}
+
+}  // namespace mbk

@@ -1,0 +1,172 @@
+// The P-NDF by implicit-hierarchy traversal, brute force and sampling ([Wang20] Eqs. 1-3, Alg. 3, Sec. 5.2-5.3):
+// see glint_pndf.h.
+#include "libbake/glint/glint_pndf.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "formats/error.h"
+#include "libbake/glint/glint_technique.h"
+
+namespace mbk {
+namespace {
+
+Vec2 texel_center(int64_t t0, int64_t t1) { return Vec2(double(t0) + 0.5, double(t1) + 0.5); }
+
+int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a - 1) / b) - 1; }
+
+// The separable factor of the element masses along one axis: exp(-(t + 0.5 - c)^2 / (2 (sigma_p^2 + sigma_h^2))).
+std::vector<double> axis_weights(int64_t lo, int64_t hi, double c, double sigma_p) {
+  const double var = sigma_p * sigma_p + kGlintElementSigmaTexels * kGlintElementSigmaTexels;
+  std::vector<double> w;
+  w.reserve(size_t(hi - lo + 1));
+  for (int64_t t = lo; t <= hi; ++t) {
+    const double d = double(t) + 0.5 - c;
+    w.push_back(std::exp(-0.5 * d * d / var));
+  }
+  return w;
+}
+
+// Index i with probability w_i / sum w, from u in [0, 1) (inversion of the running sum).
+size_t pick(const std::vector<double>& w, double u) {
+  double total = 0.0;
+  for (const double x : w) total += x;
+  double target = u * total, run = 0.0;
+  for (size_t i = 0; i < w.size(); ++i) {
+    run += w[i];
+    if (target < run) return i;
+  }
+  return w.size() - 1;
+}
+
+}  // namespace
+
+TexelRange footprint_texels(const GlintFootprint& footprint) {
+  const double s = footprint.sigma;
+  if (!(std::isfinite(s) && s > 0.0) || !std::isfinite(footprint.center.x()) || !std::isfinite(footprint.center.y()))
+    throw Error(ExitCode::invalid_input, "P-NDF footprint needs a finite centre and a finite sigma > 0", "P-NDF");
+  const double r = kGlintFootprintCutoffSigmas * s;
+  constexpr double kLimit = 4.0e18;  // the texel indices must fit in int64 with room for patch arithmetic
+  const Vec2& c = footprint.center;
+  if (std::abs(c.x()) + r > kLimit || std::abs(c.y()) + r > kLimit)
+    throw Error(ExitCode::invalid_input, "P-NDF footprint lies too far from the origin", "P-NDF");
+  // Centre t + 0.5 in [c - r, c + r].
+  return {int64_t(std::ceil(c.x() - r - 0.5)), int64_t(std::floor(c.x() + r - 0.5)),
+          int64_t(std::ceil(c.y() - r - 0.5)), int64_t(std::floor(c.y() + r - 0.5))};
+}
+
+double point_ndf(const GlintPointQuery& point, const Vec2& u, double sigma_r, const Vec2& s) {
+  if (!(std::isfinite(sigma_r) && sigma_r > 0.0))
+    throw Error(ExitCode::invalid_input, "point NDF intrinsic roughness must be finite and > 0", "P-NDF");
+  const double r2 = (s - point.evaluate(u).n).squaredNorm() / (sigma_r * sigma_r);
+  return std::exp(-0.5 * r2) / (2.0 * std::numbers::pi * sigma_r * sigma_r);
+}
+
+GlintPndf::GlintPndf(const GlintRangeQuery& range, double sigma_r) : range_(&range), sigma_r_(sigma_r) {
+  if (!(std::isfinite(sigma_r) && sigma_r > 0.0))
+    throw Error(ExitCode::invalid_input, "P-NDF intrinsic roughness must be finite and > 0", "P-NDF");
+}
+
+bool GlintPndf::outside(const RmqBounds& b, const Vec2& s) const {
+  const double m = kGlintNormalCutoffSigmas * sigma_r_;
+  return s.x() < b.min_x - m || s.x() > b.max_x + m || s.y() < b.min_y - m || s.y() > b.max_y + m;
+}
+
+double GlintPndf::element_term(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Vec2& s) const {
+  if (outside(range_->element_bounds(t0, t1), s)) return 0.0;
+  const Vec2 u = texel_center(t0, t1);
+  const NormalSample q = range_->point().evaluate(u);
+  return element_footprint_integral({u, q.n, q.jacobian}, footprint, sigma_r_, s);
+}
+
+double GlintPndf::normalizer(const GlintFootprint& footprint, const TexelRange& t) const {
+  double sx = 0.0, sy = 0.0;
+  for (const double w : axis_weights(t.t0_lo, t.t0_hi, footprint.center.x(), footprint.sigma)) sx += w;
+  for (const double w : axis_weights(t.t1_lo, t.t1_hi, footprint.center.y(), footprint.sigma)) sy += w;
+  // element_footprint_mass at the footprint's centre is the masses' common factor.
+  return element_footprint_mass(footprint.center, footprint, sigma_r_) * sx * sy;
+}
+
+double GlintPndf::evaluate_brute_force(const GlintFootprint& footprint, const Vec2& s) const {
+  const TexelRange t = footprint_texels(footprint);
+  if (t.empty()) return 0.0;
+  double sum = 0.0;
+  for (int64_t t1 = t.t1_lo; t1 <= t.t1_hi; ++t1)
+    for (int64_t t0 = t.t0_lo; t0 <= t.t0_hi; ++t0) sum += element_term(t0, t1, footprint, s);
+  return sum / normalizer(footprint, t);
+}
+
+double GlintPndf::traverse(const TargetNode& node, const GlintFootprint& footprint, const Vec2& s,
+                           PndfStatistics& stats) const {
+  ++stats.nodes_visited;
+  const int64_t h = range_->target_side();
+  if (node.width == 1 && node.height == 1) {
+    const double v = element_term(node.patch_i * h + node.x0, node.patch_j * h + node.y0, footprint, s);
+    if (v != 0.0) ++stats.elements_evaluated;
+    return v;
+  }
+  uint32_t lookups = 0;
+  const RmqBounds b = range_->node_bounds(node, &lookups);
+  stats.rmq_lookups += lookups;
+  if (outside(b, s)) return 0.0;
+  const uint32_t w0 = (node.width + 1) / 2, h0 = (node.height + 1) / 2;
+  double sum = 0.0;
+  for (int qy = 0; qy < 2; ++qy)
+    for (int qx = 0; qx < 2; ++qx) {
+      TargetNode child = node;
+      child.x0 = node.x0 + (qx ? w0 : 0);
+      child.width = qx ? node.width - w0 : w0;
+      child.y0 = node.y0 + (qy ? h0 : 0);
+      child.height = qy ? node.height - h0 : h0;
+      if (child.width > 0 && child.height > 0) sum += traverse(child, footprint, s, stats);
+    }
+  return sum;
+}
+
+double GlintPndf::evaluate(const GlintFootprint& footprint, const Vec2& s, PndfStatistics* stats) const {
+  const TexelRange t = footprint_texels(footprint);
+  if (t.empty()) return 0.0;
+  PndfStatistics local;
+  const int64_t h = range_->target_side();
+  double sum = 0.0;
+  // One root node per target patch the footprint covers ([Wang20] Sec. 5.2), however many.
+  for (int64_t pj = floor_div(t.t1_lo, h); pj <= floor_div(t.t1_hi, h); ++pj)
+    for (int64_t pi = floor_div(t.t0_lo, h); pi <= floor_div(t.t0_hi, h); ++pi) {
+      const int64_t x_lo = std::max(t.t0_lo, pi * h), x_hi = std::min(t.t0_hi, pi * h + h - 1);
+      const int64_t y_lo = std::max(t.t1_lo, pj * h), y_hi = std::min(t.t1_hi, pj * h + h - 1);
+      const TargetNode root{pi,
+                            pj,
+                            uint32_t(x_lo - pi * h),
+                            uint32_t(y_lo - pj * h),
+                            uint32_t(x_hi - x_lo + 1),
+                            uint32_t(y_hi - y_lo + 1)};
+      sum += traverse(root, footprint, s, local);
+    }
+  if (stats) {
+    stats->nodes_visited += local.nodes_visited;
+    stats->elements_evaluated += local.elements_evaluated;
+    stats->rmq_lookups += local.rmq_lookups;
+  }
+  return sum / normalizer(footprint, t);
+}
+
+std::optional<Vec2> GlintPndf::sample(const GlintFootprint& footprint, const std::function<double()>& uniform) const {
+  const TexelRange t = footprint_texels(footprint);
+  if (t.empty()) return std::nullopt;
+  const std::vector<double> wx = axis_weights(t.t0_lo, t.t0_hi, footprint.center.x(), footprint.sigma);
+  const std::vector<double> wy = axis_weights(t.t1_lo, t.t1_hi, footprint.center.y(), footprint.sigma);
+  for (int attempt = 0; attempt < 64; ++attempt) {
+    const int64_t t0 = t.t0_lo + int64_t(pick(wx, uniform()));
+    const int64_t t1 = t.t1_lo + int64_t(pick(wy, uniform()));
+    const Vec2 u = texel_center(t0, t1);
+    const NormalSample q = range_->point().evaluate(u);
+    const Vec2 s =
+        sample_element_normal({u, q.n, q.jacobian}, footprint, sigma_r_, {uniform(), uniform(), uniform(), uniform()});
+    if (!outside(range_->element_bounds(t0, t1), s)) return s;
+  }
+  return std::nullopt;
+}
+
+}  // namespace mbk

@@ -1,0 +1,88 @@
+// The P-NDF of the infinite blended microstructure over a Gaussian pixel footprint ([Wang20] Eqs. 1-3,
+// Sec. 4.6, 5.2, 5.3, Algorithm 3): evaluation by the implicit-hierarchy traversal, the brute-force sum it must
+// equal, and importance sampling.
+//
+// Elements: one per target texel t (blended_range.h), centre u_t = t + 0.5, with n_t and J_t from the point
+// query at u_t (blended_normal.h), integrated against the footprint in closed form (position_normal_element.h).
+// Truncation (the SAME in every evaluation, so that traversal == brute force up to rounding):
+// - footprint: the texels whose centres lie in the square |u_t - c|_inf <= 3 sigma_p (footprint_texels());
+// - normal: element t counts at s only if s lies in its element bounds (blended_range.h: the blend of its four
+//   example texels' leaf intervals, i.e. the reach n +/- |J| 3 sigma_h) widened by 4 sigma_r per component;
+// - position: the element's Gaussian is integrated over the whole plane (the 3 sigma_h spatial cut-off only
+//   sizes the leaf intervals).
+// Normalisation: D_P(s) = sum_t k_t(s) / sum_t m_t over the footprint's texels, i.e. the untruncated D_P would
+// integrate to exactly 1 over s; the normal truncation removes the mass beyond 4 sigma_r (< 1e-4).
+//
+// Traversal (Algorithm 3 with [Wang20] Sec. 5.2): the footprint's texel rectangle is split at target patch
+// borders into one rectangle per covered patch, however many (never clamped in size); each is a root node.
+// A node of more than one texel is pruned when s lies outside its range bounds (blended_range.h) widened by
+// 4 sigma_r, else split into (up to) four halves; a one-texel node is the element test above. Node bounds
+// contain every element bound of the node, so pruning drops only elements that would add exactly 0.
+// Deviation [Wang20]: Alg. 3 starts from a power-of-two square grown past the footprint; here nodes are the
+// footprint's own rectangles halved, so no node reads texels outside the footprint (same result, fewer
+// range queries).
+//
+// Sampling ([Wang20] Sec. 5.3): an element is picked with probability m_t / sum m (m_t is separable in t_0,
+// t_1, so two 1-D inversions), a normal is drawn from k_t / m_t, and the draw restarts when that normal lies
+// outside the element's truncation box: the samples' density is then exactly proportional to D_P.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <optional>
+
+#include "libbake/glint/blended_range.h"
+#include "libbake/glint/position_normal_element.h"
+
+namespace mbk {
+
+struct TexelRange {
+  int64_t t0_lo = 0, t0_hi = -1, t1_lo = 0, t1_hi = -1;  // inclusive; empty when lo > hi
+  bool empty() const { return t0_lo > t0_hi || t1_lo > t1_hi; }
+};
+
+// The texels whose centres lie in the footprint's truncation square. Throws Error(invalid_input) for a
+// non-finite centre or a sigma that is not finite and > 0.
+TexelRange footprint_texels(const GlintFootprint& footprint);
+
+// The reference the P-NDF approximates ([Wang20] Eq. 1 before Yan16's elements): the NDF of ONE point u of the
+// infinite microstructure, the intrinsic-roughness Gaussian around its exact normal n(u) (the point query),
+//   D_u(s) = exp(-|s - n(u)|^2 / (2 sigma_r^2)) / (2 pi sigma_r^2),
+// untruncated, integrating to 1. Averaged over a pixel's area (a renderer's many rays per pixel) it converges
+// to Eq. 1 with that pixel's footprint and the continuous normal field, which the P-NDF approximates with one
+// linearized element per texel. Throws Error(invalid_input) unless sigma_r is finite and > 0.
+double point_ndf(const GlintPointQuery& point, const Vec2& u, double sigma_r, const Vec2& s);
+
+struct PndfStatistics {
+  uint64_t nodes_visited = 0;  // range-query nodes plus element tests
+  uint64_t elements_evaluated = 0;
+  uint64_t rmq_lookups = 0;
+};
+
+class GlintPndf {
+ public:
+  // References the range query (which must outlive it). Throws Error(invalid_input) unless sigma_r is finite
+  // and > 0.
+  GlintPndf(const GlintRangeQuery& range, double sigma_r);
+
+  double sigma_r() const { return sigma_r_; }
+  // D_P(s) by traversal; `stats`, when given, accumulates the work done.
+  double evaluate(const GlintFootprint& footprint, const Vec2& s, PndfStatistics* stats = nullptr) const;
+  // D_P(s) summed over every texel of the footprint (the reference the traversal must equal).
+  double evaluate_brute_force(const GlintFootprint& footprint, const Vec2& s) const;
+  // A normal drawn with density D_P (rules above), from `uniform` (numbers in [0, 1)); nullopt when the
+  // footprint holds no texel centre, or after 64 rejected draws in a row (never seen in the tests).
+  std::optional<Vec2> sample(const GlintFootprint& footprint, const std::function<double()>& uniform) const;
+
+ private:
+  double element_term(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Vec2& s) const;
+  bool outside(const RmqBounds& b, const Vec2& s) const;
+  double normalizer(const GlintFootprint& footprint, const TexelRange& texels) const;
+  double traverse(const TargetNode& node, const GlintFootprint& footprint, const Vec2& s, PndfStatistics& stats) const;
+
+  const GlintRangeQuery* range_;
+  double sigma_r_;
+};
+
+}  // namespace mbk

@@ -1,0 +1,57 @@
+// One position-normal element through a Gaussian footprint ([Yan16], [Wang20] Eqs. 1-3): see
+// position_normal_element.h.
+#include "libbake/glint/position_normal_element.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "libbake/glint/glint_technique.h"
+
+namespace mbk {
+namespace {
+
+constexpr double kSigmaH2 = kGlintElementSigmaTexels * kGlintElementSigmaTexels;
+
+// Two independent N(0, 1) numbers from two uniforms in [0, 1) (Box-Muller; 1 - u1 is in (0, 1]).
+Vec2 standard_normal_pair(double u1, double u2) {
+  const double radius = std::sqrt(-2.0 * std::log(1.0 - u1));
+  const double angle = 2.0 * std::numbers::pi * u2;
+  return Vec2(radius * std::cos(angle), radius * std::sin(angle));
+}
+
+}  // namespace
+
+double element_footprint_integral(const PositionNormalElement& element, const GlintFootprint& footprint, double sigma_r,
+                                  const Vec2& s) {
+  const double ip = 1.0 / (footprint.sigma * footprint.sigma), ir = 1.0 / (sigma_r * sigma_r);
+  const Vec2 d = element.center - footprint.center;
+  const Vec2 r = s - element.n;
+  const Mat2& J = element.jacobian;
+  const Mat2 A = (ip + 1.0 / kSigmaH2) * Mat2::Identity() + ir * J.transpose() * J;
+  const Vec2 b = -ip * d + ir * J.transpose() * r;
+  const double e = ip * d.squaredNorm() + ir * r.squaredNorm();
+  // A is symmetric positive definite: solve with the explicit 2x2 inverse.
+  const double det = A(0, 0) * A(1, 1) - A(0, 1) * A(1, 0);
+  const Vec2 a_inv_b = Vec2(A(1, 1) * b.x() - A(0, 1) * b.y(), A(0, 0) * b.y() - A(1, 0) * b.x()) / det;
+  const double exponent = std::max(0.0, e - b.dot(a_inv_b));  // >= 0 in exact arithmetic
+  return 2.0 * std::numbers::pi / std::sqrt(det) * std::exp(-0.5 * exponent);
+}
+
+double element_footprint_mass(const Vec2& element_center, const GlintFootprint& footprint, double sigma_r) {
+  const double sp2 = footprint.sigma * footprint.sigma;
+  const double se2 = sp2 * kSigmaH2 / (sp2 + kSigmaH2);
+  const double d2 = (element_center - footprint.center).squaredNorm();
+  constexpr double kTwoPi = 2.0 * std::numbers::pi;
+  return kTwoPi * sigma_r * sigma_r * kTwoPi * se2 * std::exp(-0.5 * d2 / (sp2 + kSigmaH2));
+}
+
+Vec2 sample_element_normal(const PositionNormalElement& element, const GlintFootprint& footprint, double sigma_r,
+                           const std::array<double, 4>& uniforms) {
+  const double sp2 = footprint.sigma * footprint.sigma;
+  const Vec2 mean = (kSigmaH2 * footprint.center + sp2 * element.center) / (sp2 + kSigmaH2);
+  const double se = std::sqrt(sp2 * kSigmaH2 / (sp2 + kSigmaH2));
+  const Vec2 u = mean + se * standard_normal_pair(uniforms[0], uniforms[1]);
+  return element.n + element.jacobian * (u - element.center) + sigma_r * standard_normal_pair(uniforms[2], uniforms[3]);
+}
+
+}  // namespace mbk

@@ -1,0 +1,105 @@
+// The `glints` scene effect (libbake/scene/effect_glints.cpp, libbake/eval/glints_effect.h): it bakes only the
+// example's lut and rmq assets with canonical options, refuses bad options naming them, and on a constant map
+// (where the P-NDF over any footprint equals the exact point NDF, tests/glint/glint_pndf_test.cpp) the filtered
+// render agrees with the brute-force reference, which reads no assets; on a bumpy map the two reflect the same
+// light overall.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "formats/error.h"
+#include "libbake/eval/image_difference.h"
+#include "libbake/eval/renderer.h"
+#include "libbake/scene/bake_plan.h"
+#include "tests/scene/scene_test_fixtures.h"
+
+namespace mbk {
+namespace {
+
+using nlohmann::json;
+using testing::ScratchDir;
+
+json glint_material(const std::string& map, const json& effect) {
+  return {{"albedo", {0.05, 0.05, 0.05}},
+          {"specular", {{"roughness", 0.2}, {"f0", 0.9}}},
+          {"normal_map", {{"path", map}}},
+          {"effects", {effect}}};
+}
+
+json scene_with(const json& effect, const std::string& map) {
+  const json plain = {{"albedo", {0.5, 0.5, 0.5}}, {"specular", {{"roughness", 0.3}, {"f0", 0.04}}}};
+  return testing::small_scene({{"a", glint_material(map, effect)}, {"b", plain}, {"c", plain}}, 40, 30);
+}
+
+double mean(const Image& im) {
+  double s = 0.0;
+  for (const float v : im.pixels) s += v;
+  return s / double(im.pixels.size());
+}
+
+Image render(const Scene& scene, uint32_t spp, uint32_t reference) {
+  RenderSettings settings;
+  settings.spp = spp;
+  settings.reference = reference;
+  return render_scene(scene, load_render_inputs(scene, settings), settings, Progress::silent());
+}
+
+void bake(const Scene& scene) {
+  std::filesystem::create_directories(default_asset_folder(scene));
+  for (const PlannedAsset& a : plan_assets(scene))
+    a.recipe.bake(Progress::silent()).write(default_asset_folder(scene) / a.file_name);
+}
+
+TEST(GlintsEffect, BakesOnlyLutAndRmqWithCanonicalOptions) {
+  ScratchDir dir("glints_plan");
+  testing::write_bumpy_map(dir / "bumps.exr", 64, 64);
+  testing::write_json(dir / "s.json", scene_with({{"name", "glints"}, {"patch", 32}, {"bits", 8}}, "bumps.exr"));
+  const Scene scene = load_scene(dir / "s.json");
+  std::vector<std::string> kinds;
+  for (const PlannedAsset& a : plan_assets(scene)) kinds.push_back(a.recipe.kind);
+  EXPECT_EQ(kinds, (std::vector<std::string>{"lut", "rmq"}));
+  const json& options = scene.materials.at("a").effects.at(0).options;
+  EXPECT_EQ(options, (json{{"blending", "histogram"},
+                           {"sigma_r", 0.01},
+                           {"patch", 32},
+                           {"seed", 1},
+                           {"lut_size", 4096},
+                           {"bits", 8}}));
+}
+
+TEST(GlintsEffect, BadOptionsAreRefused) {
+  ScratchDir dir("glints_bad");
+  testing::write_bumpy_map(dir / "bumps.exr", 64, 64);
+  for (const json& effect : {json{{"name", "glints"}, {"blending", "histo"}}, json{{"name", "glints"}, {"patch", 48}},
+                             json{{"name", "glints"}, {"bits", 12}}, json{{"name", "glints"}, {"sigma_r", 0}},
+                             json{{"name", "glints"}, {"sigma", 0.1}}}) {
+    testing::write_json(dir / "s.json", scene_with(effect, "bumps.exr"));
+    EXPECT_THROW(load_scene(dir / "s.json"), Error) << effect.dump();
+  }
+}
+
+TEST(GlintsEffect, ConstantMapFilteredRenderAgreesWithTheReference) {
+  ScratchDir dir("glints_flat");
+  testing::write_normal_map(dir / "flat.exr", 64, 64, [](uint32_t, uint32_t) { return Vec3(0.1, -0.05, 1.0); });
+  testing::write_json(dir / "s.json", scene_with({{"name", "glints"}, {"sigma_r", 0.2}, {"patch", 32}}, "flat.exr"));
+  const Scene scene = load_scene(dir / "s.json");
+  bake(scene);
+  const Image filtered = render(scene, 4, 0), reference = render(scene, 1, 2);
+  const ImageDifference d = compare_images(filtered, reference);
+  EXPECT_LT(d.rmse, 0.05 * mean(reference)) << "rmse " << d.rmse << ", mean " << mean(reference);
+  EXPECT_NEAR(mean(filtered), mean(reference), 0.01 * mean(reference));
+}
+
+TEST(GlintsEffect, BumpyMapReflectsTheSameLightAsTheReference) {
+  ScratchDir dir("glints_bumpy");
+  testing::write_bumpy_map(dir / "bumps.exr", 64, 64);
+  testing::write_json(dir / "s.json", scene_with({{"name", "glints"}, {"sigma_r", 0.05}, {"patch", 32}}, "bumps.exr"));
+  const Scene scene = load_scene(dir / "s.json");
+  bake(scene);
+  const double filtered = mean(render(scene, 4, 0)), reference = mean(render(scene, 1, 8));
+  EXPECT_NEAR(filtered, reference, 0.05 * reference) << filtered << " vs " << reference;
+}
+
+}  // namespace
+}  // namespace mbk
