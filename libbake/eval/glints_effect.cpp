@@ -34,9 +34,8 @@ class GlintShader : public MaterialShader {
     const auto direct = [&](const Vec3& l, const Vec3& e) {
       const double cos_l = n.dot(l);
       if (!(cos_l > 0.0) || !(n.dot(v) > 0.0)) return;
-      const Vec3 spec = evaluate_specular(brdf, n, l, v, [&](const Vec3& h) {
-        return d(Vec2(h.dot(c.frame.T), h.dot(c.frame.B)));
-      });
+      const Vec3 spec =
+          evaluate_specular(brdf, n, l, v, [&](const Vec3& h) { return d(Vec2(h.dot(c.frame.T), h.dot(c.frame.B))); });
       out += (brdf.albedo / std::numbers::pi + spec).cwiseProduct(e) * cos_l;
     };
     for (const PointLight& light : points_) {
@@ -100,8 +99,8 @@ ShaderPtr glints_effect_shader(const EffectShaderRequest& request) {
   };
   auto f = std::make_shared<Filtered>();
   f->example = example;
-  f->surface = GlintSurface::open(example->map, Asset::open(request.assets.at(0)), Asset::open(request.assets.at(1)),
-                                  settings);
+  f->surface =
+      GlintSurface::open(example->map, Asset::open(request.assets.at(0)), Asset::open(request.assets.at(1)), settings);
   return std::make_shared<GlintShader>(request.scene, [f, W, H](const ShadingContext& c) {
     const GlintFootprint fp = glint_pixel_footprint(c.uv, c.footprint.duv_dx, c.footprint.duv_dy, W, H);
     if (!std::isfinite(fp.sigma)) return GlintDistribution([](const Vec2&) { return 0.0; });  // grazing

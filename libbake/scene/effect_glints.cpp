@@ -43,15 +43,18 @@ EffectInfo glints_effect() {
     const uint32_t bits = v ? json_uint(*v, r.child("bits"), 8, 16) : 16;
     if (bits != 8 && bits != 16)
       throw Error(ExitCode::invalid_input, "glints bits must be 8 or 16, got " + std::to_string(bits), r.child("bits"));
-    use.options = {{"blending", blending}, {"sigma_r", sigma_r}, {"patch", patch},
+    use.options = {{"blending", blending}, {"sigma_r", sigma_r},   {"patch", patch},
                    {"seed", seed},         {"lut_size", lut_size}, {"bits", bits}};
     return use;
   };
   e.assets = [](const Material& m, const EffectUse& use) {
     const BakeInput map = normal_map_input(m);
-    const uint32_t lut_size = use.options.at("lut_size"), patch = use.options.at("patch"), bits = use.options.at("bits");
+    const uint32_t lut_size = use.options.at("lut_size"), patch = use.options.at("patch"),
+                   bits = use.options.at("bits");
     return std::vector<AssetRecipe>{
-        {"lut", {{"size", lut_size}}, {map},
+        {"lut",
+         {{"size", lut_size}},
+         {map},
          [map, lut_size](Progress& progress) {
            const LoadedNormalMap loaded = load_normal_map(map.path, map.normal_map->load_options());
            return lut_asset_writer(bake_standardization_lut(loaded.map, lut_size, progress), loaded.record);

@@ -60,12 +60,10 @@ TEST(GlintsEffect, BakesOnlyLutAndRmqWithCanonicalOptions) {
   for (const PlannedAsset& a : plan_assets(scene)) kinds.push_back(a.recipe.kind);
   EXPECT_EQ(kinds, (std::vector<std::string>{"lut", "rmq"}));
   const json& options = scene.materials.at("a").effects.at(0).options;
-  EXPECT_EQ(options, (json{{"blending", "histogram"},
-                           {"sigma_r", 0.01},
-                           {"patch", 32},
-                           {"seed", 1},
-                           {"lut_size", 4096},
-                           {"bits", 8}}));
+  EXPECT_EQ(
+      options,
+      (json{
+          {"blending", "histogram"}, {"sigma_r", 0.01}, {"patch", 32}, {"seed", 1}, {"lut_size", 4096}, {"bits", 8}}));
 }
 
 TEST(GlintsEffect, BadOptionsAreRefused) {
