@@ -1,12 +1,16 @@
 // `microbake gen KIND -o OUT.{png,exr} [--size N|WxH] [--seed S]`: writes a deterministic procedural
-// normal map (libbake/gen/generator.h) as a 16-bit PNG or a 32-bit float EXR (+Y convention).
+// normal map (libbake/gen/generator.h) as a 16-bit PNG or a 32-bit float EXR (+Y convention); for panels,
+// --creases FILE.json also writes the exact crease lines (libbake/gen/panels.h) for `microbake crease`.
 #include <charconv>
+#include <fstream>
 #include <iostream>
 
 #include "cli/command.h"
 #include "cli/common_options.h"
 #include "formats/error.h"
+#include "libbake/crease/curve_set.h"
 #include "libbake/gen/generator.h"
+#include "libbake/gen/panels.h"
 #include "libbake/image/normal_map_encoding.h"
 
 namespace mbk::cli {
@@ -40,6 +44,8 @@ class GenCommand : public Command {
     add_output_option(app, options_.output, "normal map (.png: 16-bit, .exr: 32-bit float)");
     app.add_option("--size", options_.size, "Size in texels: N (square) or WxH")->default_val("512");
     app.add_option("--seed", options_.seed, "Random seed (any 32-bit unsigned integer)")->default_val(1);
+    app.add_option("--creases", options_.creases.path,
+                   "panels only: also write the exact crease lines as a curves file (.json) for `microbake crease`");
     add_run_options(app, options_.run);
   }
 
@@ -54,6 +60,12 @@ class GenCommand : public Command {
       throw Error(ExitCode::bad_command_line, "gen writes .png (16-bit) or .exr (float) files, not '" + ext + "'",
                   options_.output.path);
     options_.output.check_writable();
+    if (!options_.creases.path.empty()) {
+      if (options_.kind != "panels")
+        throw Error(ExitCode::bad_command_line, "--creases is known only for kind panels, not '" + options_.kind + "'");
+      options_.creases.require_extension(".json");
+      options_.creases.check_writable();
+    }
   }
 
   int run() override {
@@ -63,6 +75,16 @@ class GenCommand : public Command {
     options_.output.write_with([&](const std::filesystem::path& temporary) {
       save_normal_map(temporary, map, YConvention::plus_y, options_.output.path);
     });
+    if (!options_.creases.path.empty()) {
+      CurveSet creases;
+      for (const CreaseSegment& s : panel_creases(size_, options_.seed))
+        creases.curves.push_back({{s.a, s.b}, false, ""});
+      options_.creases.write_with([&](const std::filesystem::path& temporary) {
+        std::ofstream out(temporary);
+        out << curves_to_json(creases).dump() << "\n";
+        if (!out) throw Error(ExitCode::io_failure, "cannot write", options_.creases.path);
+      });
+    }
     if (!options_.run.quiet)
       std::cout << "gen: wrote " << options_.output.path << " (" << options_.kind << ", " << size_.width << "x"
                 << size_.height << ", seed " << options_.seed << ", +Y)\n";
@@ -73,6 +95,7 @@ class GenCommand : public Command {
   struct Options {
     std::string kind;
     OutputOption output;
+    OutputOption creases;  // optional
     std::string size = "512";
     uint32_t seed = 1;
     RunOptions run;

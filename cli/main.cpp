@@ -30,6 +30,8 @@ std::vector<CommandEntry> command_table() {
        "Bake the MIP pyramid of (f, f^2) of a driver image for footprint mean and variance (asset kind "
        "moments)",
        make_moments_command},
+      {"crease", "Bake a normal map with discontinuity curves into crisp-crease maps (asset kind crease)",
+       make_crease_command},
       {"bake", "Bake the assets a scene's effects need, skipping up-to-date ones", make_bake_command},
       {"render", "Render a scene with the reference shader evaluator (or its brute-force --reference)",
        make_render_command},

@@ -48,5 +48,6 @@ AssetKind sh_kind();
 AssetKind vmf_kind();
 AssetKind colormap_kind();
 AssetKind moments_kind();
+AssetKind crease_kind();
 
 }  // namespace mbk

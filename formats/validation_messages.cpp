@@ -100,6 +100,15 @@ std::span<const MessageInfo> all_messages() {
       moments_level0_not_square,
       moments_negative_variance,
       moments_parent_not_mean,
+      crease_bad_parameters,
+      crease_section_shape,
+      crease_non_finite,
+      crease_bad_crossing,
+      crease_bad_segments,
+      crease_negative_distance,
+      crease_gradient_not_unit,
+      crease_bad_side,
+      crease_bad_normal,
   };
   return kAll;
 }

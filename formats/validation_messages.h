@@ -170,6 +170,23 @@ inline constexpr MessageInfo moments_negative_variance{18005, Severity::error,
                                                        "moments: a texel's second moment is below its mean squared"};
 inline constexpr MessageInfo moments_parent_not_mean{18006, Severity::error,
                                                      "moments: texel is not the mean of the finest texels it covers"};
+// 16xxx: kind 6, `crease` (discontinuity signatures, distance and gradient maps)
+inline constexpr MessageInfo crease_bad_parameters{16001, Severity::error,
+                                                   "crease: parameters missing or out of range (width, height)"};
+inline constexpr MessageInfo crease_section_shape{16002, Severity::error,
+                                                  "crease: section type or shape does not match the parameters"};
+inline constexpr MessageInfo crease_non_finite{16003, Severity::error, "crease: non-finite value"};
+inline constexpr MessageInfo crease_bad_crossing{16004, Severity::error,
+                                                 "crease: edge crossing neither -1 (none) nor in [1/1024, 1 - 1/1024]"};
+inline constexpr MessageInfo crease_bad_segments{
+    16005, Severity::error,
+    "crease: cell segment word not an allowed configuration (unknown bits, more than two segments, a segment "
+    "ending on an edge without a crossing, or a direction bit without its segment)"};
+inline constexpr MessageInfo crease_negative_distance{16006, Severity::error, "crease: negative distance"};
+inline constexpr MessageInfo crease_gradient_not_unit{16007, Severity::error, "crease: gradient is not a unit vector"};
+inline constexpr MessageInfo crease_bad_side{16008, Severity::error, "crease: side is neither +1 nor -1"};
+inline constexpr MessageInfo crease_bad_normal{16009, Severity::error,
+                                               "crease: normal is not a unit vector in the upper hemisphere"};
 }  // namespace msg
 
 // All of the above, for documentation and the uniqueness test.

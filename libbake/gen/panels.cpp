@@ -97,6 +97,19 @@ std::vector<CreaseSegment> panel_creases(const PanelLayout& layout) {
   return out;
 }
 
+Vec3 panel_normal(const PanelLayout& layout, const Vec2& p) {
+  // dh/dx and dh/drow: each rectangle contributes rise * grad(inside distance) where 0 < d < bevel; the
+  // inside distance is the smallest of the four edge distances, whose gradient is that edge's inward normal.
+  Vec2 g = Vec2::Zero();
+  for (const BevelledRect& r : layout.rects) {
+    const double d[4] = {p.x() - r.lo.x(), r.hi.x() - p.x(), p.y() - r.lo.y(), r.hi.y() - p.y()};
+    const Vec2 inward[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+    const int k = int(std::min_element(d, d + 4) - d);
+    if (d[k] > 0.0 && d[k] < r.bevel) g += r.rise * inward[k];
+  }
+  return Vec3(-g.x(), g.y(), 1.0).normalized();  // tangent y is up: dh/dv = -dh/drow
+}
+
 std::vector<CreaseSegment> panel_creases(const MapSize& size, uint32_t seed) {
   return panel_creases(panel_layout(size, seed));
 }

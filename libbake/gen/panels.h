@@ -40,4 +40,9 @@ struct CreaseSegment {
 std::vector<CreaseSegment> panel_creases(const PanelLayout& layout);
 std::vector<CreaseSegment> panel_creases(const MapSize& size, uint32_t seed);
 
+// The exact unit normal of the panel surface at p (texel coordinates as above; tangent space, +Y: the map's
+// convention), the truth the texel normals sample. On a crease line itself (measure zero) it is the normal of
+// one of the two sides.
+Vec3 panel_normal(const PanelLayout& layout, const Vec2& p);
+
 }  // namespace mbk

@@ -13,6 +13,7 @@
 #include "formats/validate.h"
 #include "tests/formats/asset_fixtures.h"
 #include "tests/formats/colormap_fixtures.h"
+#include "tests/formats/crease_fixtures.h"
 #include "tests/formats/lut_fixtures.h"
 #include "tests/formats/moments_fixtures.h"
 #include "tests/formats/rmq_fixtures.h"
@@ -364,6 +365,28 @@ std::vector<CorruptCase> corrupt_cases() {
       {"MomentsNegativeVariance", 18005, [] { return test::moments_with_element(1, 1, [](float) { return 0.0f; }); }},
       {"MomentsParentNotMean", 18006,
        [] { return test::moments_with_element(1, 1, [](float m2) { return m2 + 0.01f; }); }},
+      {"CreaseZeroWidth", 16001,
+       [] {
+         return test::crease_bytes({}, {{"width", 0}, {"height", 2}});
+       }},
+      {"CreaseShapeDisagreesWithWidth", 16002,
+       [] {
+         return test::crease_bytes({}, {{"width", 4}, {"height", 2}});
+       }},
+      {"CreaseNaNDistance", 16003,
+       [] { return test::crease_bytes([](CreaseField& f) { f.distance[7] = std::nanf(""); }); }},
+      {"CreaseCrossingOnACorner", 16004,
+       [] { return test::crease_bytes([](CreaseField& f) { f.crossing_h[2] = 0.0f; }); }},
+      {"CreaseThreeSegmentsInACell", 16005,
+       [] { return test::crease_bytes([](CreaseField& f) { f.segments[f.cell_index(2, 1)] = 0x13; }); }},
+      {"CreaseSegmentToUncrossedEdge", 16005,
+       [] { return test::crease_bytes([](CreaseField& f) { f.segments[f.cell_index(2, 1)] = 1u << 5; }); }},
+      {"CreaseNegativeDistance", 16006,
+       [] { return test::crease_bytes([](CreaseField& f) { f.distance[3] = -0.5f; }); }},
+      {"CreaseGradientNotUnit", 16007, [] { return test::crease_bytes([](CreaseField& f) { f.gradient[4] = 0.5f; }); }},
+      {"CreaseSideZero", 16008, [] { return test::crease_bytes([](CreaseField& f) { f.side[5] = 0; }); }},
+      {"CreaseNormalBelowHorizon", 16009,
+       [] { return test::crease_bytes([](CreaseField& f) { f.normals[2] = -1.0f; }); }},
   };
 }
 

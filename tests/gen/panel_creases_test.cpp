@@ -47,6 +47,27 @@ TEST_P(PanelSizes, NormalsAreConstantAwayFromCreases) {
   EXPECT_GT(checked, size_t(size.width) * size.height / 3);
 }
 
+TEST_P(PanelSizes, ExactNormalIsTheMapAwayFromCreases) {
+  // panel_normal is the surface the map samples: where the central-difference stencil sees one linear piece
+  // (beyond 1.05 texels from every crease), the map's texel is the exact normal at its centre.
+  const MapSize size = GetParam();
+  const NormalMap m = generate_panels(size, 8, Progress::silent());
+  const PanelLayout layout = panel_layout(size, 8);
+  const auto creases = panel_creases(layout);
+  size_t checked = 0, sloped = 0;
+  for (uint32_t r = 0; r < size.height; ++r)
+    for (uint32_t x = 0; x < size.width; ++x) {
+      const Vec2 p(x + 0.5, r + 0.5);
+      if (distance_to_creases(p, creases, size) < 1.05) continue;
+      const Vec3 exact = panel_normal(layout, p);
+      EXPECT_LT((m.at(x, r).cast<double>() - exact).norm(), 1e-6) << "(" << x << ", " << r << ")";
+      sloped += exact.z() < 0.99;
+      ++checked;
+    }
+  EXPECT_GT(checked, size_t(size.width) * size.height / 3);
+  EXPECT_GT(sloped, checked / 20);  // bevels are checked too, not only flat tops
+}
+
 TEST_P(PanelSizes, NormalsChangeAcrossEveryCrease) {
   const MapSize size = GetParam();
   const NormalMap m = generate_panels(size, 8, Progress::silent());

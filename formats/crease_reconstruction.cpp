@@ -1,0 +1,266 @@
+// Reconstruction of a normal map with discontinuities at a point (see crease_reconstruction.h).
+#include "formats/crease_reconstruction.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace mbk {
+namespace {
+
+// Values carried by a partition vertex: distance, gradient (2), normal (3).
+struct Values {
+  double d = 0.0, g[2] = {0, 0}, n[3] = {0, 0, 0};
+};
+
+Values lerp(const Values& a, const Values& b, double t) {
+  Values r;
+  r.d = (1 - t) * a.d + t * b.d;
+  for (int c = 0; c < 2; ++c) r.g[c] = (1 - t) * a.g[c] + t * b.g[c];
+  for (int c = 0; c < 3; ++c) r.n[c] = (1 - t) * a.n[c] + t * b.n[c];
+  return r;
+}
+
+void accumulate(Values& sum, const Values& v, double w) {
+  sum.d += w * v.d;
+  for (int c = 0; c < 2; ++c) sum.g[c] += w * v.g[c];
+  for (int c = 0; c < 3; ++c) sum.n[c] += w * v.n[c];
+}
+
+Values scaled(const Values& v, double w) {
+  Values r;
+  accumulate(r, v, w);
+  return r;
+}
+
+struct UnionFind {
+  std::array<int, 8> parent = {0, 1, 2, 3, 4, 5, 6, 7};
+  int find(int a) { return parent[size_t(a)] == a ? a : parent[size_t(a)] = find(parent[size_t(a)]); }
+  void join(int a, int b) { parent[size_t(find(a))] = find(b); }
+};
+
+// Barycentric coordinates of p in triangle (a, b, c).
+void barycentric(const double p[2], const double a[2], const double b[2], const double c[2], double l[3]) {
+  const double det = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+  l[1] = ((p[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (p[1] - a[1])) / det;
+  l[2] = ((b[0] - a[0]) * (p[1] - a[1]) - (p[0] - a[0]) * (b[1] - a[1])) / det;
+  l[0] = 1.0 - l[1] - l[2];
+}
+
+uint32_t clamp_cell(double x, uint32_t cells) {
+  const double c = std::floor(x + 0.5);
+  return c <= 0.0 ? 0u : c >= double(cells - 1) ? cells - 1 : uint32_t(c);
+}
+
+double smoothstep(double t) { return t * t * (3.0 - 2.0 * t); }
+
+}  // namespace
+
+CreaseSample reconstruct_crease(const CreaseField& f, double x, double y) {
+  CreaseSample out;
+  const uint32_t ci = clamp_cell(x, f.cells_x()), cj = clamp_cell(y, f.cells_y());
+  out.cell_i = ci;
+  out.cell_j = cj;
+  const double p[2] = {std::clamp(x - (double(ci) - 0.5), 0.0, 1.0), std::clamp(y - (double(cj) - 0.5), 0.0, 1.0)};
+  const CreaseCellEdges e = crease_cell_edges(f, ci, cj);
+  const uint32_t sample_i[4] = {ci, ci + 1, ci + 1, ci}, sample_j[4] = {cj, cj, cj + 1, cj + 1};
+  if (!(e.crossing[0] || e.crossing[1] || e.crossing[2] || e.crossing[3])) {
+    // No discontinuity touches the cell: bilinear interpolation (Sec. 4.3), continuous with the partition of
+    // a neighbour, which is linear along every edge without a crossing.
+    const double w[4] = {(1 - p[0]) * (1 - p[1]), p[0] * (1 - p[1]), p[0] * p[1], (1 - p[0]) * p[1]};
+    double g[2] = {0, 0}, side = 0;
+    out.distance = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      const size_t s = f.sample_index(sample_i[k], sample_j[k]);
+      out.distance += w[k] * f.distance[s];
+      g[0] += w[k] * f.gradient[2 * s], g[1] += w[k] * f.gradient[2 * s + 1];
+      side += f.side[s];
+    }
+    const double glen = std::hypot(g[0], g[1]);
+    if (glen > 1e-12) out.gradient[0] = g[0] / glen, out.gradient[1] = g[1] / glen;
+    out.side = side >= 0 ? 1 : -1;
+    out.triangle = -1;
+    bilinear_normal(f, x, y, out.normal);
+    return out;
+  }
+
+  // Vertices: C0..C3 (0..3), P0..P3 (4..7), E (8), in cell-local coordinates.
+  double pos[9][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (int k = 0; k < 4; ++k) pos[4 + k][0] = e.px[k], pos[4 + k][1] = e.py[k];
+  // E = P0 + s (P2 - P0) = P1 + r (P3 - P1): P0P2 runs top to bottom, P1P3 right to left.
+  const double ax = pos[6][0] - pos[4][0], ay = 1.0, bx = pos[7][0] - pos[5][0], by = pos[7][1] - pos[5][1];
+  const double cx = pos[5][0] - pos[4][0], cy = pos[5][1] - pos[4][1];
+  const double den = ax * by - ay * bx;  // never 0: P0P2 and P1P3 cross inside the cell
+  const double s02 = (cx * by - cy * bx) / den, s13 = (cx * ay - cy * ax) / den;
+  pos[8][0] = pos[4][0] + s02 * ax, pos[8][1] = s02;
+
+  // Triangles: T_k = (P_{k-1}, C_k, P_k), I_k = (E, P_k, P_{k+1}).
+  int tri[8][3];
+  for (int k = 0; k < 4; ++k) {
+    tri[k][0] = 4 + (k + 3) % 4, tri[k][1] = k, tri[k][2] = 4 + k;
+    tri[4 + k][0] = 8, tri[4 + k][1] = 4 + k, tri[4 + k][2] = 4 + (k + 1) % 4;
+  }
+  // Regions: join across partition edges that are not segments.
+  const uint16_t seg = e.mask & kCreaseSegmentBits;
+  UnionFind regions;
+  for (int k = 0; k < 4; ++k) {
+    if (!((seg >> ((k + 3) % 4)) & 1u)) regions.join(k, 4 + (k + 3) % 4);  // T_k - I_{k-1} across P_{k-1}P_k
+    const int spoke = (k + 1) % 4;                                         // I_k - I_{k+1} across E P_{k+1}
+    const bool cut = ((seg >> 4) & 1u && spoke % 2 == 0) || ((seg >> 5) & 1u && spoke % 2 == 1);
+    if (!cut) regions.join(4 + k, 4 + spoke);
+  }
+  // The point's triangle: the one where its smallest barycentric coordinate is largest.
+  int best = 0;
+  double lambda[3] = {0, 0, 0}, best_min = -1e300;
+  for (int t = 0; t < 8; ++t) {
+    double l[3];
+    barycentric(p, pos[tri[t][0]], pos[tri[t][1]], pos[tri[t][2]], l);
+    const double m = std::min({l[0], l[1], l[2]});
+    if (m > best_min) best_min = m, best = t, std::copy(l, l + 3, lambda);
+  }
+  out.triangle = best;
+  const int region = regions.find(best);
+  bool reach[4];
+  for (int k = 0; k < 4; ++k) reach[k] = regions.find(k) == region;
+
+  Values corner[4];
+  for (int k = 0; k < 4; ++k) {
+    const size_t s = f.sample_index(sample_i[k], sample_j[k]);
+    corner[k].d = f.distance[s];
+    corner[k].g[0] = f.gradient[2 * s], corner[k].g[1] = f.gradient[2 * s + 1];
+    const float* n = f.sample_normal(sample_i[k], sample_j[k]);
+    for (int c = 0; c < 3; ++c) corner[k].n[c] = n[c];
+  }
+  Values region_mean;
+  int reached = 0, side_sum = 0;
+  for (int k = 0; k < 4; ++k)
+    if (reach[k]) {
+      accumulate(region_mean, corner[k], 1.0);
+      side_sum += f.side[f.sample_index(sample_i[k], sample_j[k])];
+      ++reached;
+    }
+  if (reached) region_mean = scaled(region_mean, 1.0 / reached);
+  out.side = side_sum >= 0 ? 1 : -1;
+
+  Values value[9];
+  for (int k = 0; k < 4; ++k) value[k] = corner[k];
+  for (int k = 0; k < 4; ++k) {
+    const int a = k, b = (k + 1) % 4;
+    const double t = e.along[k];
+    Values v;
+    if (reach[a] && reach[b])
+      v = lerp(corner[a], corner[b], t);
+    else if (reach[a])
+      v = corner[a];
+    else if (reach[b])
+      v = corner[b];
+    else
+      v = region_mean;
+    v.d = e.crossing[k] ? 0.0 : (1 - t) * corner[a].d + t * corner[b].d;
+    value[4 + k] = v;
+  }
+  // E, seen from the region (only needed inside an inner triangle).
+  if (best >= 4) {
+    const bool through02 = (seg >> 4) & 1u, through13 = (seg >> 5) & 1u;
+    bool touches[4] = {false, false, false, false};
+    for (int k = 0; k < 4; ++k)
+      if (regions.find(4 + k) == region) touches[k] = touches[(k + 1) % 4] = true;
+    Values v;
+    if (!through02 && !through13) {
+      v = lerp(lerp(value[4], value[6], s02), lerp(value[5], value[7], s13), 0.5);
+    } else if (through02 && touches[0] && touches[2]) {
+      v = lerp(value[4], value[6], s02);
+    } else if (through13 && touches[1] && touches[3]) {
+      v = lerp(value[5], value[7], s13);
+    } else {
+      int n = 0;
+      for (int k = 0; k < 4; ++k)
+        if (touches[k]) accumulate(v, value[4 + k], 1.0), ++n;
+      v = scaled(v, 1.0 / n);
+    }
+    if (through02 || through13) v.d = 0.0;
+    value[8] = v;
+  }
+  Values r;
+  for (int c = 0; c < 3; ++c) accumulate(r, value[tri[best][c]], lambda[c]);
+  out.distance = std::max(0.0, r.d);
+  const double glen = std::hypot(r.g[0], r.g[1]);
+  if (glen > 1e-12) {
+    out.gradient[0] = r.g[0] / glen, out.gradient[1] = r.g[1] / glen;
+  } else {  // opposite gradients cancelling (on a medial axis): take the nearest vertex's
+    const int v = tri[best][std::max_element(lambda, lambda + 3) - lambda];
+    out.gradient[0] = value[v].g[0], out.gradient[1] = value[v].g[1];
+  }
+  const double nlen = std::sqrt(r.n[0] * r.n[0] + r.n[1] * r.n[1] + r.n[2] * r.n[2]);
+  for (int c = 0; c < 3; ++c) out.normal[c] = nlen > 0.0 ? r.n[c] / nlen : (c == 2 ? 1.0 : 0.0);
+  return out;
+}
+
+void bilinear_normal(const CreaseField& f, double x, double y, double out[3]) {
+  const uint32_t ci = clamp_cell(x, f.cells_x()), cj = clamp_cell(y, f.cells_y());
+  const double u = std::clamp(x - (double(ci) - 0.5), 0.0, 1.0), v = std::clamp(y - (double(cj) - 0.5), 0.0, 1.0);
+  const float* n00 = f.sample_normal(ci, cj);
+  const float* n10 = f.sample_normal(ci + 1, cj);
+  const float* n01 = f.sample_normal(ci, cj + 1);
+  const float* n11 = f.sample_normal(ci + 1, cj + 1);
+  double len = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    out[c] = (1 - v) * ((1 - u) * n00[c] + u * n10[c]) + v * ((1 - u) * n01[c] + u * n11[c]);
+    len += out[c] * out[c];
+  }
+  len = std::sqrt(len);
+  for (int c = 0; c < 3; ++c) out[c] = len > 0.0 ? out[c] / len : (c == 2 ? 1.0 : 0.0);
+}
+
+double CreaseProfile::slope(double d, int side) const {
+  if (!(d < width)) return 0.0;
+  switch (kind) {
+    case CreaseProfileKind::v:
+      return depth / width;
+    case CreaseProfileKind::rounded:
+      return 2.0 * depth * d / (width * width);
+    case CreaseProfileKind::step:
+      return side > 0 ? depth / width : 0.0;
+    case CreaseProfileKind::table: {
+      const size_t n = table.size();
+      const double step = width / double(n - 1);
+      const size_t k = std::min(n - 2, size_t(d / step));
+      return (table[k + 1] - table[k]) / step;
+    }
+  }
+  return 0.0;
+}
+
+double crease_blend(const CreaseProfile& profile, double d) {
+  if (d >= profile.blend_end) return 1.0;
+  if (d <= profile.blend_start) return 0.0;
+  return smoothstep((d - profile.blend_start) / (profile.blend_end - profile.blend_start));
+}
+
+std::string crease_profile_kind_names() { return "v, rounded, step, table"; }
+
+bool parse_crease_profile_kind(const std::string& name, CreaseProfileKind& kind) {
+  const std::pair<const char*, CreaseProfileKind> names[] = {{"v", CreaseProfileKind::v},
+                                                             {"rounded", CreaseProfileKind::rounded},
+                                                             {"step", CreaseProfileKind::step},
+                                                             {"table", CreaseProfileKind::table}};
+  for (const auto& [n, k] : names)
+    if (name == n) {
+      kind = k;
+      return true;
+    }
+  return false;
+}
+
+void crease_normal(const CreaseSample& s, const CreaseProfile& profile, double out[3]) {
+  const double b = crease_blend(profile, s.distance);
+  const double slope = b < 1.0 ? profile.slope(s.distance, s.side) : 0.0;
+  const double bt = b * std::sqrt(slope * slope + 1.0);  // |g| = 1
+  out[0] = -(1.0 - b) * slope * s.gradient[0] + bt * s.normal[0];
+  out[1] = (1.0 - b) * slope * s.gradient[1] + bt * s.normal[1];  // g's y runs down, tangent y up
+  out[2] = (1.0 - b) + bt * s.normal[2];
+  const double len = std::sqrt(out[0] * out[0] + out[1] * out[1] + out[2] * out[2]);
+  for (int c = 0; c < 3; ++c) out[c] /= len;
+}
+
+}  // namespace mbk

@@ -1,0 +1,134 @@
+// Asset kind 6, `crease`: [Parilov05]'s discontinuity signature, distance, gradient and side maps with the
+// normal map (formats/crease_field.h). formats/SPEC.md, "Kind 6: crease".
+//
+// Invariants `validate` checks, in this order (the first finding ends the check): parameters (16001), section
+// types and shapes (16002), finite floats (16003), crossings -1 or in [kCreaseMinT, 1 - kCreaseMinT] (16004),
+// allowed cell configurations (16005: at most two segment bits, each between two crossed edges, no unknown
+// bits, direction bits only with their segment), distances >= 0 (16006), unit gradients (16007: |len - 1| <=
+// 1e-5, float rounding of a renormalised vector is ~1e-7), sides +1/-1 (16008), unit normals with z >= 0
+// (16009, same tolerance).
+#include <bit>
+#include <cmath>
+#include <string>
+
+#include "formats/asset.h"
+#include "formats/asset_kind.h"
+#include "formats/crease_field.h"
+
+namespace mbk {
+namespace {
+
+constexpr double kUnitTolerance = 1e-5;
+
+void check_crease(const Asset& a, std::vector<Finding>& out) {
+  uint32_t w = 0, h = 0;
+  if (std::string problem = parse_crease_size(a, w, h); !problem.empty()) {
+    out.push_back(make_finding(msg::crease_bad_parameters, problem, {{"key", "parameters"}}));
+    return;
+  }
+  if (std::string problem = check_crease_section_shapes(a, w, h); !problem.empty()) {
+    out.push_back(make_finding(msg::crease_section_shape, problem));
+    return;
+  }
+  const CreaseField f = read_crease_field(a);
+  const std::pair<const char*, const std::vector<float>*> floats[] = {{kCreaseNormalsSection, &f.normals},
+                                                                      {kCreaseDistanceSection, &f.distance},
+                                                                      {kCreaseGradientSection, &f.gradient},
+                                                                      {kCreaseCrossingHSection, &f.crossing_h},
+                                                                      {kCreaseCrossingVSection, &f.crossing_v}};
+  for (const auto& [name, values] : floats)
+    for (size_t i = 0; i < values->size(); ++i)
+      if (!std::isfinite((*values)[i])) {
+        out.push_back(make_finding(msg::crease_non_finite, "'" + std::string(name) + "' element " + std::to_string(i),
+                                   {{"section", name}, {"index", i}}));
+        return;
+      }
+  for (const auto& [name, values] :
+       {std::pair{kCreaseCrossingHSection, &f.crossing_h}, std::pair{kCreaseCrossingVSection, &f.crossing_v}})
+    for (size_t i = 0; i < values->size(); ++i) {
+      const float t = (*values)[i];
+      if (t != kCreaseNoCrossing && !(t >= kCreaseMinT && t <= 1.0f - kCreaseMinT)) {
+        out.push_back(make_finding(msg::crease_bad_crossing,
+                                   "'" + std::string(name) + "' edge " + std::to_string(i) + " is " + std::to_string(t),
+                                   {{"section", name}, {"index", i}}));
+        return;
+      }
+    }
+  for (uint32_t j = 0; j < f.cells_y(); ++j)
+    for (uint32_t i = 0; i < f.cells_x(); ++i) {
+      const CreaseCellEdges c = crease_cell_edges(f, i, j);
+      std::string problem;
+      const uint16_t segments = c.mask & kCreaseSegmentBits;
+      if (c.mask & ~(kCreaseSegmentBits | kCreaseReversedBits))
+        problem = "unknown bits";
+      else if (std::popcount(segments) > int(kCreaseMaxSegmentsPerCell))
+        problem = std::to_string(std::popcount(segments)) + " segments";
+      else if ((c.mask >> 8) & ~segments)
+        problem = "a direction bit without its segment";
+      for (int bit = 0; bit < 6 && problem.empty(); ++bit)
+        if ((segments >> bit) & 1u)
+          for (int e : {kCreasePairFirst[bit], kCreasePairSecond[bit]})
+            if (!c.crossing[e])
+              problem = "segment bit " + std::to_string(bit) + " ends on edge " + std::to_string(e) +
+                        ", which has no crossing";
+      if (!problem.empty()) {
+        out.push_back(make_finding(msg::crease_bad_segments,
+                                   "cell (" + std::to_string(i) + ", " + std::to_string(j) + "): " + problem,
+                                   {{"section", kCreaseSegmentsSection}, {"cell", {i, j}}}));
+        return;
+      }
+    }
+  for (size_t k = 0; k < f.distance.size(); ++k) {
+    const uint32_t i = uint32_t(k % f.samples_x()), j = uint32_t(k / f.samples_x());
+    const nlohmann::json at = {{"sample", {i, j}}};
+    const std::string where = "sample (" + std::to_string(i) + ", " + std::to_string(j) + ")";
+    if (f.distance[k] < 0.0f) {
+      out.push_back(make_finding(msg::crease_negative_distance, where + ": " + std::to_string(f.distance[k]), at));
+      return;
+    }
+    const double len = std::hypot(double(f.gradient[2 * k]), double(f.gradient[2 * k + 1]));
+    if (std::abs(len - 1.0) > kUnitTolerance) {
+      out.push_back(make_finding(msg::crease_gradient_not_unit, where + ": length " + std::to_string(len), at));
+      return;
+    }
+    if (f.side[k] != 1 && f.side[k] != -1) {
+      out.push_back(make_finding(msg::crease_bad_side, where + ": " + std::to_string(int(f.side[k])), at));
+      return;
+    }
+  }
+  for (size_t k = 0; k < f.normals.size() / 3; ++k) {
+    const double x = f.normals[3 * k], y = f.normals[3 * k + 1], z = f.normals[3 * k + 2];
+    const double len = std::sqrt(x * x + y * y + z * z);
+    if (std::abs(len - 1.0) > kUnitTolerance || z < 0.0) {
+      out.push_back(make_finding(msg::crease_bad_normal,
+                                 "texel (" + std::to_string(k % w) + ", " + std::to_string(k / w) + "): length " +
+                                     std::to_string(len) + ", z " + std::to_string(z),
+                                 {{"texel", {k % w, k / w}}}));
+      return;
+    }
+  }
+}
+
+}  // namespace
+
+AssetKind crease_kind() {
+  AssetKind k;
+  k.id = kCreaseKindId;
+  k.name = "crease";
+  k.summary = "normal map with discontinuities: discontinuity signatures, distance, gradient and side maps";
+  k.required_sections = {
+      {kCreaseNormalsSection, {ElementType::f32}, 3},   {kCreaseDistanceSection, {ElementType::f32}, 2},
+      {kCreaseGradientSection, {ElementType::f32}, 3},  {kCreaseSideSection, {ElementType::i8}, 2},
+      {kCreaseCrossingHSection, {ElementType::f32}, 2}, {kCreaseCrossingVSection, {ElementType::f32}, 2},
+      {kCreaseSegmentsSection, {ElementType::u16}, 2}};
+  k.knows_section = [](const std::string& name) {
+    for (const char* s : {kCreaseNormalsSection, kCreaseDistanceSection, kCreaseGradientSection, kCreaseSideSection,
+                          kCreaseCrossingHSection, kCreaseCrossingVSection, kCreaseSegmentsSection})
+      if (name == s) return true;
+    return false;
+  };
+  k.check_invariants = check_crease;
+  return k;
+}
+
+}  // namespace mbk

@@ -1,0 +1,97 @@
+// Distance, gradient and side maps of the discontinuity network (see crease_distance.h).
+#include "libbake/crease/crease_distance.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace mbk {
+
+nlohmann::json DistanceStatistics::to_json() const {
+  return {{"band", band}, {"samples_in_band", samples_in_band}, {"max_distance", max_distance}};
+}
+
+double segment_distance(const CurveSegment& s, const Vec2& p, Vec2* nearest) {
+  const Vec2 d = s.b - s.a;
+  const double len2 = d.squaredNorm();
+  const double t = len2 > 0.0 ? std::clamp((p - s.a).dot(d) / len2, 0.0, 1.0) : 0.0;
+  const Vec2 q = t == 1.0 ? s.b : Vec2(s.a + t * d);
+  if (nearest) *nearest = q;
+  return (p - q).norm();
+}
+
+DistanceStatistics compute_distance_maps(const std::vector<CurveSegment>& segments, double band, CreaseField& field,
+                                         Progress& progress) {
+  const int64_t nx = field.samples_x(), ny = field.samples_y();
+  std::vector<double> dist(size_t(nx * ny), std::numeric_limits<double>::infinity());
+  std::vector<int64_t> nearest(size_t(nx * ny), -1);
+  auto position = [](int64_t i, int64_t j) { return Vec2(double(i) - 0.5, double(j) - 0.5); };
+  auto offer = [&](int64_t i, int64_t j, int64_t s) {
+    const size_t k = size_t(j * nx + i);
+    const double d = segment_distance(segments[size_t(s)], position(i, j));
+    if (d < dist[k] || (d == dist[k] && s < nearest[k])) {
+      dist[k] = d;
+      nearest[k] = s;
+    }
+  };
+  progress.start("crease: distance map", segments.size() + 2);
+  // Brute force over each segment's bounding box grown by the band (samples at x = i - 0.5).
+  for (size_t s = 0; s < segments.size(); ++s) {
+    const CurveSegment& seg = segments[s];
+    const int64_t i0 = std::max<int64_t>(0, int64_t(std::ceil(std::min(seg.a.x(), seg.b.x()) - band + 0.5)));
+    const int64_t i1 = std::min<int64_t>(nx - 1, int64_t(std::floor(std::max(seg.a.x(), seg.b.x()) + band + 0.5)));
+    const int64_t j0 = std::max<int64_t>(0, int64_t(std::ceil(std::min(seg.a.y(), seg.b.y()) - band + 0.5)));
+    const int64_t j1 = std::min<int64_t>(ny - 1, int64_t(std::floor(std::max(seg.a.y(), seg.b.y()) + band + 0.5)));
+    for (int64_t j = j0; j <= j1; ++j)
+      for (int64_t i = i0; i <= i1; ++i) offer(i, j, int64_t(s));
+    progress.advance();
+  }
+  DistanceStatistics stats;
+  stats.band = band;
+  for (double d : dist) stats.samples_in_band += d <= band;
+  // Nearest-segment propagation beyond the band.
+  auto take = [&](int64_t i, int64_t j, int64_t ni, int64_t nj) {
+    if (ni < 0 || nj < 0 || ni >= nx || nj >= ny) return;
+    const int64_t s = nearest[size_t(nj * nx + ni)];
+    if (s >= 0) offer(i, j, s);
+  };
+  for (int64_t j = 0; j < ny; ++j) {
+    for (int64_t i = 0; i < nx; ++i) {
+      take(i, j, i - 1, j);
+      take(i, j, i - 1, j - 1);
+      take(i, j, i, j - 1);
+      take(i, j, i + 1, j - 1);
+    }
+    for (int64_t i = nx - 1; i >= 0; --i) take(i, j, i + 1, j);
+  }
+  progress.advance();
+  for (int64_t j = ny - 1; j >= 0; --j) {
+    for (int64_t i = nx - 1; i >= 0; --i) {
+      take(i, j, i + 1, j);
+      take(i, j, i + 1, j + 1);
+      take(i, j, i, j + 1);
+      take(i, j, i - 1, j + 1);
+    }
+    for (int64_t i = 0; i < nx; ++i) take(i, j, i - 1, j);
+  }
+  progress.advance();
+  for (int64_t j = 0; j < ny; ++j)
+    for (int64_t i = 0; i < nx; ++i) {
+      const size_t k = size_t(j * nx + i);
+      const CurveSegment& seg = segments[size_t(nearest[k])];
+      const Vec2 p = position(i, j), dir = seg.b - seg.a;
+      Vec2 q;
+      const double d = segment_distance(seg, p, &q);
+      const double cross = dir.x() * (p - seg.a).y() - dir.y() * (p - seg.a).x();
+      const Vec2 g = d > 0.0 ? Vec2((p - q) / d) : Vec2(Vec2(-dir.y(), dir.x()).normalized());
+      field.distance[k] = float(d);
+      field.gradient[2 * k] = float(g.x());
+      field.gradient[2 * k + 1] = float(g.y());
+      field.side[k] = cross >= 0.0 ? 1 : -1;
+      stats.max_distance = std::max(stats.max_distance, d);
+    }
+  progress.finish();
+  return stats;
+}
+
+}  // namespace mbk
