@@ -12,6 +12,7 @@
 #include "libbake/eval/renderer.h"
 #include "libbake/image/image_io.h"
 #include "libbake/scene/bake_plan.h"
+#include "tests/eval/render_fixtures.h"
 #include "tests/scene/scene_test_fixtures.h"
 
 namespace mbk {
@@ -44,19 +45,6 @@ json scene(const std::string& mode, const json& effect_a, const json& effect_b, 
   return s;
 }
 
-void bake(const Scene& s) {
-  std::filesystem::create_directories(default_asset_folder(s));
-  for (const PlannedAsset& a : plan_assets(s))
-    a.recipe.bake(Progress::silent()).write(default_asset_folder(s) / a.file_name);
-}
-
-Image render_mode(const Scene& s, uint32_t reference) {
-  RenderSettings settings;
-  settings.spp = 1;
-  settings.reference = reference;
-  return render_scene(s, load_render_inputs(s, settings), settings, Progress::silent());
-}
-
 // RMSE over the pixels where `mask` (an image of the same scene with one material marked) is set.
 double masked_rmse(const Image& a, const Image& b, const std::vector<bool>& mask) {
   double sum = 0.0;
@@ -87,10 +75,10 @@ TEST(ColormapEffect, FilteredIsCloserToTheReferenceThanNaive_RecedingNoisePlane)
   testing::write_json(dir / "filtered.json", scene("filtered", noise, height, slope));
   testing::write_json(dir / "naive.json", scene("naive", noise, height, slope));
   const Scene filtered_scene = load_scene(dir / "filtered.json"), naive_scene = load_scene(dir / "naive.json");
-  bake(filtered_scene);
-  bake(naive_scene);
-  const Image filtered = render_mode(filtered_scene, 0), naive = render_mode(naive_scene, 0);
-  const Image reference = render_mode(filtered_scene, 8);
+  testing::bake_scene(filtered_scene);
+  testing::bake_scene(naive_scene);
+  const Image filtered = testing::render(filtered_scene, 1, 0), naive = testing::render(naive_scene, 1, 0);
+  const Image reference = testing::render(filtered_scene, 1, 8);
 
   // Per material: the pixels each shape covers, where a render with that material black differs.
   for (const std::string m : {"a", "b", "c"}) {
@@ -98,8 +86,8 @@ TEST(ColormapEffect, FilteredIsCloserToTheReferenceThanNaive_RecedingNoisePlane)
     marked["materials"][m] = {{"albedo", 0.0}, {"specular", {{"f0", 0.0}}}};
     testing::write_json(dir / "marked.json", marked);
     const Scene marked_scene = load_scene(dir / "marked.json");
-    bake(marked_scene);
-    const Image black = render_mode(marked_scene, 0);
+    testing::bake_scene(marked_scene);
+    const Image black = testing::render(marked_scene, 1, 0);
     std::vector<bool> mask(size_t(black.width) * black.height);
     for (size_t p = 0; p < mask.size(); ++p)
       for (uint32_t c = 0; c < 3; ++c) mask[p] = mask[p] || black.pixels[p * 3 + c] != filtered.pixels[p * 3 + c];
@@ -126,12 +114,12 @@ TEST(ColormapEffect, ImageDriverFilteredIsCloserToTheReferenceThanNaive_MomentPy
   testing::write_json(dir / "filtered.json", scene("filtered", effect, effect, effect));
   testing::write_json(dir / "naive.json", scene("naive", effect, effect, effect));
   const Scene filtered_scene = load_scene(dir / "filtered.json"), naive_scene = load_scene(dir / "naive.json");
-  bake(filtered_scene);
-  bake(naive_scene);
-  const Image reference = render_mode(filtered_scene, 8);
+  testing::bake_scene(filtered_scene);
+  testing::bake_scene(naive_scene);
+  const Image reference = testing::render(filtered_scene, 1, 8);
   const std::vector<bool> all(size_t(reference.width) * reference.height, true);
-  const double e_filtered = masked_rmse(render_mode(filtered_scene, 0), reference, all),
-               e_naive = masked_rmse(render_mode(naive_scene, 0), reference, all);
+  const double e_filtered = masked_rmse(testing::render(filtered_scene, 1, 0), reference, all),
+               e_naive = masked_rmse(testing::render(naive_scene, 1, 0), reference, all);
   std::cout << "image driver: RMSE to reference: naive " << e_naive << ", filtered " << e_filtered << "\n";
   EXPECT_LT(e_filtered, 0.7 * e_naive);
 }

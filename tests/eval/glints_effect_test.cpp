@@ -12,12 +12,15 @@
 #include "libbake/eval/image_difference.h"
 #include "libbake/eval/renderer.h"
 #include "libbake/scene/bake_plan.h"
+#include "tests/eval/render_fixtures.h"
 #include "tests/scene/scene_test_fixtures.h"
 
 namespace mbk {
 namespace {
 
 using nlohmann::json;
+using testing::bake_scene;
+using testing::render;
 using testing::ScratchDir;
 
 json glint_material(const std::string& map, const json& effect) {
@@ -36,19 +39,6 @@ double mean(const Image& im) {
   double s = 0.0;
   for (const float v : im.pixels) s += v;
   return s / double(im.pixels.size());
-}
-
-Image render(const Scene& scene, uint32_t spp, uint32_t reference) {
-  RenderSettings settings;
-  settings.spp = spp;
-  settings.reference = reference;
-  return render_scene(scene, load_render_inputs(scene, settings), settings, Progress::silent());
-}
-
-void bake(const Scene& scene) {
-  std::filesystem::create_directories(default_asset_folder(scene));
-  for (const PlannedAsset& a : plan_assets(scene))
-    a.recipe.bake(Progress::silent()).write(default_asset_folder(scene) / a.file_name);
 }
 
 TEST(GlintsEffect, BakesOnlyLutAndRmqWithCanonicalOptions) {
@@ -82,7 +72,7 @@ TEST(GlintsEffect, ConstantMapFilteredRenderAgreesWithTheReference) {
   testing::write_normal_map(dir / "flat.exr", 64, 64, [](uint32_t, uint32_t) { return Vec3(0.1, -0.05, 1.0); });
   testing::write_json(dir / "s.json", scene_with({{"name", "glints"}, {"sigma_r", 0.2}, {"patch", 32}}, "flat.exr"));
   const Scene scene = load_scene(dir / "s.json");
-  bake(scene);
+  bake_scene(scene);
   const Image filtered = render(scene, 4, 0), reference = render(scene, 1, 2);
   const ImageDifference d = compare_images(filtered, reference);
   EXPECT_LT(d.rmse, 0.05 * mean(reference)) << "rmse " << d.rmse << ", mean " << mean(reference);
@@ -94,7 +84,7 @@ TEST(GlintsEffect, BumpyMapReflectsTheSameLightAsTheReference) {
   testing::write_bumpy_map(dir / "bumps.exr", 64, 64);
   testing::write_json(dir / "s.json", scene_with({{"name", "glints"}, {"sigma_r", 0.05}, {"patch", 32}}, "bumps.exr"));
   const Scene scene = load_scene(dir / "s.json");
-  bake(scene);
+  bake_scene(scene);
   const double filtered = mean(render(scene, 4, 0)), reference = mean(render(scene, 1, 8));
   EXPECT_NEAR(filtered, reference, 0.05 * reference) << filtered << " vs " << reference;
 }

@@ -15,32 +15,21 @@
 #include "libbake/eval/renderer.h"
 #include "libbake/eval/surface_frame.h"
 #include "libbake/scene/bake_plan.h"
+#include "tests/eval/render_fixtures.h"
 #include "tests/scene/scene_test_fixtures.h"
 
 namespace mbk {
 namespace {
 
 using nlohmann::json;
+using testing::bake_scene;
+using testing::render;
 using testing::ScratchDir;
 
 json material(const std::string& map, const std::vector<std::string>& effects, double roughness = 0.3) {
   json m = {{"albedo", {0.6, 0.5, 0.4}}, {"specular", {{"roughness", roughness}, {"f0", 0.04}}}, {"effects", effects}};
   if (!map.empty()) m["normal_map"] = {{"path", map}};
   return m;
-}
-
-// Bakes what the scene plans into its default asset folder (what `microbake bake` does, minus reporting).
-void bake_scene(const Scene& scene) {
-  std::filesystem::create_directories(default_asset_folder(scene));
-  for (const PlannedAsset& a : plan_assets(scene))
-    a.recipe.bake(Progress::silent()).write(default_asset_folder(scene) / a.file_name);
-}
-
-Image render(const Scene& scene, uint32_t spp, uint32_t reference = 0) {
-  RenderSettings settings;
-  settings.spp = spp;
-  settings.reference = reference;
-  return render_scene(scene, load_render_inputs(scene, settings), settings, Progress::silent());
 }
 
 TEST(Renderer, MipEffectRendersTheSameImageAsTheBaseline) {
