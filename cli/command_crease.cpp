@@ -43,12 +43,7 @@ class CreaseCommand : public Command {
     StageTimer timer;
     const LoadedNormalMap input = load_normal_map(options_.input.path, options_.input.load_options());
     const CurveSet curves = load_curves(options_.curves, input.map.width, input.map.height);
-    CurvesRecord record;
-    record.path = options_.curves;
-    record.content_hash = file_content_hash(options_.curves);
-    record.bytes = std::filesystem::file_size(options_.curves);
-    record.curves = curves.curves.size();
-    record.segments = curve_segments(curves).size();
+    const CurvesRecord record = curves_record(options_.curves, curves);
     const double load_seconds = timer.lap();
     const BakedCrease baked = bake_crease(input.map, curves, options_.bake, progress);
     const double bake_seconds = timer.lap();

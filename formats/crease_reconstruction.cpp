@@ -237,16 +237,19 @@ double crease_blend(const CreaseProfile& profile, double d) {
   return smoothstep((d - profile.blend_start) / (profile.blend_end - profile.blend_start));
 }
 
+namespace {
+// In enum order.
+constexpr const char* kProfileKindNames[] = {"v", "rounded", "step", "table"};
+}  // namespace
+
 std::string crease_profile_kind_names() { return "v, rounded, step, table"; }
 
+const char* crease_profile_kind_name(CreaseProfileKind kind) { return kProfileKindNames[int(kind)]; }
+
 bool parse_crease_profile_kind(const std::string& name, CreaseProfileKind& kind) {
-  const std::pair<const char*, CreaseProfileKind> names[] = {{"v", CreaseProfileKind::v},
-                                                             {"rounded", CreaseProfileKind::rounded},
-                                                             {"step", CreaseProfileKind::step},
-                                                             {"table", CreaseProfileKind::table}};
-  for (const auto& [n, k] : names)
-    if (name == n) {
-      kind = k;
+  for (int k = 0; k < 4; ++k)
+    if (name == kProfileKindNames[k]) {
+      kind = CreaseProfileKind(k);
       return true;
     }
   return false;

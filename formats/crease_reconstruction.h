@@ -69,9 +69,10 @@ struct CreaseProfile {
   double slope(double d, int side) const;
 };
 double crease_blend(const CreaseProfile& profile, double d);
-// Parses "v", "rounded", "step", "table"; empty string when unknown.
+// Names of the profile kinds ("v, rounded, step, table"); parsing one (false when unknown); the name of one.
 std::string crease_profile_kind_names();
 bool parse_crease_profile_kind(const std::string& name, CreaseProfileKind& kind);
+const char* crease_profile_kind_name(CreaseProfileKind kind);
 
 // [Parilov05] Eq. (1), renormalised, in tangent space:
 //   n' = P0(-(1 - b) p'(d) g + b~ B_h) + ((1 - b) + b~ B_z) e_z,  b~ = b sqrt(p'(d)^2 |g|^2 + 1), |g| = 1,

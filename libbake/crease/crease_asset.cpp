@@ -12,6 +12,16 @@ nlohmann::json CurvesRecord::to_json() const {
   return {{"path", path}, {"content_hash", content_hash}, {"bytes", bytes}, {"curves", curves}, {"segments", segments}};
 }
 
+CurvesRecord curves_record(const std::filesystem::path& path, const CurveSet& curves) {
+  CurvesRecord record;
+  record.path = path.string();
+  record.content_hash = file_content_hash(path);
+  record.bytes = std::filesystem::file_size(path);
+  record.curves = curves.curves.size();
+  record.segments = curve_segments(curves).size();
+  return record;
+}
+
 BakedCrease bake_crease(const NormalMap& map, const CurveSet& curves, const CreaseBakeOptions& options,
                         Progress& progress) {
   if (!(options.band > 0.0 && options.band <= 1e6))

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -48,6 +49,8 @@ struct CurvesRecord {
   uint64_t bytes = 0, curves = 0, segments = 0;
   nlohmann::json to_json() const;
 };
+// The record of a curves file as read (its bytes hashed again from disk). Error(io_failure) when unreadable.
+CurvesRecord curves_record(const std::filesystem::path& path, const CurveSet& curves);
 
 AssetWriter crease_asset_writer(const BakedCrease& baked, const CreaseBakeOptions& options, const InputRecord& map,
                                 const CurvesRecord& curves);

@@ -45,4 +45,14 @@ CreaseProfile crease_profile_from_json(const nlohmann::json& object, const std::
   return p;
 }
 
+nlohmann::json crease_profile_to_json(const CreaseProfile& profile) {
+  nlohmann::json j = {{"kind", crease_profile_kind_name(profile.kind)},
+                      {"depth", profile.depth},
+                      {"width", profile.width},
+                      {"blend_start", profile.blend_start},
+                      {"blend_end", profile.blend_end}};
+  if (profile.kind == CreaseProfileKind::table) j["table"] = profile.table;
+  return j;
+}
+
 }  // namespace mbk

@@ -17,5 +17,7 @@
 namespace mbk {
 
 CreaseProfile crease_profile_from_json(const nlohmann::json& object, const std::string& where);
+// Every key with its value (defaults filled in; "table" only for kind table): read back as the same profile.
+nlohmann::json crease_profile_to_json(const CreaseProfile& profile);
 
 }  // namespace mbk

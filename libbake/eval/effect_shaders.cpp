@@ -3,6 +3,7 @@
 
 #include "libbake/eval/glints_effect.h"
 #include "libbake/eval/colormap_effect.h"
+#include "libbake/eval/crease_effect.h"
 #include "libbake/eval/mip_effect.h"
 
 namespace mbk {
@@ -14,6 +15,7 @@ std::span<const EffectShaderEntry> effect_shaders() {
       {"colormap", colormap_effect_shader},
       {"colormap-height", colormap_height_effect_shader},
       {"colormap-slope", colormap_slope_effect_shader},
+      {"crease", crease_effect_shader},
   };
   return shaders;
 }

@@ -17,23 +17,10 @@ namespace {
 
 enum class ColormapCase { texture, height, slope };
 
-std::filesystem::path resolve_file(const std::filesystem::path& folder, const std::string& as_written) {
-  const std::filesystem::path p(as_written);
-  return p.is_absolute() ? p : folder / p;
-}
-
-std::string file_option(JsonObjectReader& r, const std::string& key, const std::filesystem::path& folder,
-                        EffectUse& use) {
-  const std::string file = json_string(r.required(key), r.child(key));
-  if (file.empty()) throw Error(ExitCode::invalid_input, "empty path", r.child(key));
-  use.files[key] = resolve_file(folder, file);
-  return file;
-}
-
 // The options every case reads: the colour map, its table and the mode.
 void parse_common(JsonObjectReader& r, const std::filesystem::path& folder, EffectUse& use) {
   nlohmann::json& o = use.options;
-  o["colormap"] = file_option(r, "colormap", folder, use);
+  o["colormap"] = effect_file_option(r, "colormap", folder, use);
   std::array<uint32_t, 2> size{kColormapDefaultSide, kColormapDefaultSide};
   if (const auto* v = r.optional("table_size")) {
     if (!v->is_array() || v->size() != 2)
@@ -54,7 +41,7 @@ void parse_driver(JsonObjectReader& r, const std::filesystem::path& folder, Effe
   const auto* noise = r.optional("noise");
   if (r.optional("driver")) {
     if (noise) throw Error(ExitCode::invalid_input, "give either 'driver' or 'noise', not both", r.child("noise"));
-    o["driver"] = file_option(r, "driver", folder, use);
+    o["driver"] = effect_file_option(r, "driver", folder, use);
   } else {
     static const nlohmann::json kDefaults = nlohmann::json::object();
     JsonObjectReader n(noise ? *noise : kDefaults, r.child("noise"));

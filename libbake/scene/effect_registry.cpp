@@ -1,11 +1,14 @@
 // The effects materials may name, and the assets each needs (see effect_registry.h).
 #include "libbake/scene/effect_registry.h"
 
+#include "formats/error.h"
+
 namespace mbk {
 
 std::span<const EffectInfo> effect_registry() {
-  static const std::vector<EffectInfo> effects = {mip_effect(), glints_effect(), colormap_effect(),
-                                                  colormap_height_effect(), colormap_slope_effect()};
+  static const std::vector<EffectInfo> effects = {
+      mip_effect(),   glints_effect(), colormap_effect(), colormap_height_effect(), colormap_slope_effect(),
+      crease_effect()};
   return effects;
 }
 
@@ -22,5 +25,14 @@ std::string known_effect_names() {
 }
 
 BakeInput normal_map_input(const Material& material) { return {material.normal_map->path, material.normal_map}; }
+
+std::string effect_file_option(JsonObjectReader& r, const std::string& key, const std::filesystem::path& folder,
+                               EffectUse& use) {
+  const std::string file = json_string(r.required(key), r.child(key));
+  if (file.empty()) throw Error(ExitCode::invalid_input, "empty path", r.child(key));
+  const std::filesystem::path p(file);
+  use.files[key] = p.is_absolute() ? p : folder / p;
+  return file;
+}
 
 }  // namespace mbk

@@ -56,11 +56,18 @@ std::string known_effect_names();
 // The normal map of a material as a bake input (for effects that bake from it).
 BakeInput normal_map_input(const Material& material);
 
+// A required file option `key` of an effect: its path as written (returned, for the canonical options) and,
+// resolved against the scene folder, in use.files[key]. Error(invalid_input) at the option's JSON path when
+// it is not a non-empty string.
+std::string effect_file_option(JsonObjectReader& r, const std::string& key, const std::filesystem::path& folder,
+                               EffectUse& use);
+
 // The effects, one file each.
 EffectInfo mip_effect();
 EffectInfo glints_effect();
 EffectInfo colormap_effect();         // effect_colormap.cpp
 EffectInfo colormap_height_effect();  // effect_colormap.cpp
 EffectInfo colormap_slope_effect();   // effect_colormap.cpp
+EffectInfo crease_effect();
 
 }  // namespace mbk

@@ -1,0 +1,62 @@
+// The crease shaders (see crease_effect.h).
+#include "libbake/eval/crease_effect.h"
+
+#include <cmath>
+#include <optional>
+
+#include "formats/asset.h"
+#include "formats/crease_field.h"
+#include "formats/error.h"
+#include "libbake/crease/crease_profile_json.h"
+#include "libbake/eval/exact_crease_normals.h"
+
+namespace mbk {
+namespace {
+
+Vec2 texel_point(const Vec2& uv, uint32_t width, uint32_t height) {
+  const double t = 1.0 - uv.y();
+  return Vec2((uv.x() - std::floor(uv.x())) * width, (t - std::floor(t)) * height);
+}
+
+}  // namespace
+
+ShaderPtr crease_effect_shader(const EffectShaderRequest& request) {
+  const std::string where = "materials." + request.material.name + ": crease";
+  const nlohmann::json& options = request.use.options;
+  std::optional<CreaseProfile> profile;
+  if (options.contains("profile")) profile = crease_profile_from_json(options.at("profile"), where + ".profile");
+
+  if (request.mode == EvalMode::reference) {
+    if (!request.material.normal_map)
+      throw Error(ExitCode::invalid_input, "the crease effect needs the material's normal map", where);
+    const NormalMapRef& ref = *request.material.normal_map;
+    const std::filesystem::path curves = request.use.files.at("curves");
+    const auto exact = request.cache.get<ExactCreaseNormals>(
+        "exact crease|" + ref.path.string() + "|" + curves.string() + "|" + options.dump(), [&] {
+          LoadedNormalMap loaded = load_normal_map(ref.path, ref.load_options());
+          const CurveSet set = load_curves(curves, loaded.map.width, loaded.map.height);
+          return ExactCreaseNormals(std::move(loaded.map), curve_segments(set), profile);
+        });
+    const uint32_t w = exact->width(), h = exact->height();
+    return std::make_shared<NormalMappedShader>(
+        [exact, w, h](const Vec2& uv, const UvFootprint&) { return exact->normal(texel_point(uv, w, h)); });
+  }
+
+  const std::filesystem::path& file = request.assets.at(0);
+  const auto field = request.cache.get<CreaseField>("crease asset|" + file.string(), [&] {
+    const Asset asset = Asset::open(file);
+    if (asset.kind().name != "crease")
+      throw Error(ExitCode::invalid_input, "expected a 'crease' asset, found '" + std::string(asset.kind().name) + "'",
+                  file.string());
+    return read_crease_field(asset);
+  });
+  return std::make_shared<NormalMappedShader>([field, profile](const Vec2& uv, const UvFootprint&) {
+    const Vec2 p = texel_point(uv, field->width, field->height);
+    const CreaseSample s = reconstruct_crease(*field, p.x(), p.y());
+    double n[3] = {s.normal[0], s.normal[1], s.normal[2]};
+    if (profile) crease_normal(s, *profile, n);
+    return Vec3(n[0], n[1], n[2]);
+  });
+}
+
+}  // namespace mbk
