@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "formats/asset.h"
+#include "formats/error.h"
 #include "libbake/colormap/colormap_reference.h"
 #include "libbake/colormap/colormap_shading.h"
 #include "libbake/colormap/colormap_source.h"
@@ -56,6 +57,7 @@ struct Settings {
   Microsurface surface;                        // height and slope cases (height_offset 0: the driver shifts)
   Vec2 direction = Vec2::UnitX();              // slope case
   double slope_offset = 0.5;
+  double weight = 1.0;  // kappa of Sec. 6's linear combination
 };
 
 // Quadrature of a standard normal over +-`extent` standard deviations: nodes z with weights phi(z) dz.
@@ -85,54 +87,99 @@ Vec3 light_direction(const ShadingContext& c) {
   return Vec3::UnitZ();
 }
 
-class ColormapShader : public MaterialShader {
+// One colour-map effect's term of the material's colour: C0_bar, Ch_bar (carrying V_bar) or Cs_bar.
+class ColormapTerm {
  public:
-  ColormapShader(Settings s, ShaderPtr base) : s_(std::move(s)), base_(std::move(base)) {}
+  explicit ColormapTerm(Settings s) : s_(std::move(s)) {}
+  Case which() const { return s_.which; }
+  double weight() const { return s_.weight; }
 
-  Vec3 radiance(const ShadingContext& c, const Brdf& brdf) const override {
-    Brdf coloured = brdf;
-    coloured.albedo = s_.table ? filtered_albedo(c) : reference_albedo(c);
-    return base_->radiance(c, coloured);
+  // The term at the shading point into `terms` (the height case also sets V_bar).
+  void evaluate(const ShadingContext& c, ColormapTerms& terms) const {
+    if (s_.table) {
+      filtered(c, terms);
+    } else {
+      reference(c, terms);
+    }
   }
 
  private:
-  Vec3 filtered_albedo(const ShadingContext& c) const {
+  void filtered(const ShadingContext& c, ColormapTerms& t) const {
     const ColormapFiltering mode = s_.naive ? ColormapFiltering::naive : ColormapFiltering::filtered;
-    if (s_.which == Case::slope)
-      return slope_colormap(*s_.table, s_.surface, s_.direction, s_.slope_offset, local(c.frame, c.to_viewer), mode);
+    if (s_.which == Case::slope) {
+      t.cs = slope_colormap(*s_.table, s_.surface, s_.direction, s_.slope_offset, local(c.frame, c.to_viewer), mode);
+      return;
+    }
     const NoiseFootprint f = s_.driver->statistics(c.uv, c.footprint);
-    if (s_.which == Case::texture) return texture_colormap(*s_.table, f.mean, std::sqrt(f.variance), mode);
-    return height_colormap(*s_.table, s_.surface, local(c.frame, c.to_viewer), light_direction(c), mode, f.mean,
-                           f.variance)
-        .color;
+    if (s_.which == Case::texture) {
+      t.c0 = texture_colormap(*s_.table, f.mean, std::sqrt(f.variance), mode);
+      return;
+    }
+    const HeightColormap h = height_colormap(*s_.table, s_.surface, local(c.frame, c.to_viewer), light_direction(c),
+                                             mode, f.mean, f.variance);
+    t.ch = h.color;
+    t.visibility = h.visibility;
   }
 
-  Vec3 reference_albedo(const ShadingContext& c) const {
+  void reference(const ShadingContext& c, ColormapTerms& t) const {
     // Heights: 256 nodes over +-8 sigma_h (D_h moves up to ~3 sigma_h at grazing angles); slopes: a 48 x 48
     // grid over +-6 sigma (the 2-D integral is the costly one).
     static const std::vector<QuadratureNode> z = normal_quadrature(8.0, 32, 8), zs = normal_quadrature(6.0, 12, 4);
-    if (s_.which == Case::texture) return arr(s_.curve->at(s_.driver->at_point(c.uv)));
+    if (s_.which == Case::texture) {
+      t.c0 = arr(s_.curve->at(s_.driver->at_point(c.uv)));
+      return;
+    }
     const Vec3 wo = local(c.frame, c.to_viewer);
     const Mat2& cov = s_.surface.slopes.covariance;
     if (s_.which == Case::height) {
-      const double sigma_h = s_.surface.sigma_h, lo = smith_lambda(wo, cov);
+      const double sigma_h = s_.surface.sigma_h, lo = smith_lambda(wo, cov), li = smith_lambda(light_direction(c), cov);
       std::vector<WeightedValue> heights;
       for (const auto& n : z) heights.push_back({sigma_h * n.x, n.w});
       // Eq. (14) at the point: its denominator integrates the whole height law, so it does not depend on the
       // driver and the pixel's average of these ratios is Eq. (14) over the footprint.
-      return reference_height_colormap(*s_.curve, heights, sigma_h, s_.driver->at_point(c.uv), lo,
-                                       smith_lambda(light_direction(c), cov));
+      t.ch = reference_height_colormap(*s_.curve, heights, sigma_h, s_.driver->at_point(c.uv), lo, li);
+      t.visibility = averaged_visibility(lo, li);
+      return;
     }
     const double sx = std::sqrt(cov(0, 0)), sy = std::sqrt(cov(1, 1));
     std::vector<WeightedSlope> slopes;
     for (const auto& a : zs)
       for (const auto& b : zs) slopes.push_back({s_.surface.slopes.mean + Vec2(sx * a.x, sy * b.x), a.w * b.w});
-    return reference_slope_colormap(*s_.curve, slopes, s_.direction, s_.slope_offset, wo);
+    t.cs = reference_slope_colormap(*s_.curve, slopes, s_.direction, s_.slope_offset, wo);
   }
 
   static Vec3 arr(const std::array<double, 3>& v) { return {v[0], v[1], v[2]}; }
 
   Settings s_;
+};
+
+// The material's albedo from its colour-map effects, combined as Sec. 6 says (combine_colormaps), shading through
+// the shader the first of them wrapped.
+class ColormapShader : public MaterialShader {
+ public:
+  ColormapShader(std::vector<ColormapTerm> terms, bool product, ShaderPtr base)
+      : terms_(std::move(terms)), base_(std::move(base)) {
+    weights_.product = product;
+    weights_.k0 = 0.0;
+    for (const ColormapTerm& t : terms_)
+      (t.which() == Case::texture ? weights_.k0 : t.which() == Case::height ? weights_.k1 : weights_.k2) = t.weight();
+  }
+
+  Vec3 radiance(const ShadingContext& c, const Brdf& brdf) const override {
+    ColormapTerms terms;  // absent terms: ones (product) and weight 0 (linear)
+    for (const ColormapTerm& t : terms_) t.evaluate(c, terms);
+    Brdf coloured = brdf;
+    coloured.albedo = combine_colormaps(terms, weights_);
+    return base_->radiance(c, coloured);
+  }
+
+  const std::vector<ColormapTerm>& terms() const { return terms_; }
+  bool product() const { return weights_.product; }
+  const ShaderPtr& base() const { return base_; }
+
+ private:
+  std::vector<ColormapTerm> terms_;
+  ColormapWeights weights_;
   ShaderPtr base_;
 };
 
@@ -177,7 +224,19 @@ ShaderPtr make_colormap_shader(const EffectShaderRequest& request, Case which) {
   const double angle = o.value("direction_degrees", 0.0) * std::numbers::pi / 180.0;
   s.direction = Vec2(std::cos(angle), std::sin(angle));
   s.slope_offset = o.value("offset", 0.5);
-  return std::make_shared<ColormapShader>(std::move(s), request.base);
+  s.weight = o.at("weight");
+  const bool product = o.at("combine") == "product";
+  // A second colour-map effect of the material joins the first one's shader (Sec. 6).
+  if (const auto first = std::dynamic_pointer_cast<const ColormapShader>(request.base)) {
+    if (first->product() != product)
+      throw Error(ExitCode::invalid_input,
+                  "the colour-map effects of one material must combine the same way (linear or product)",
+                  "materials." + request.material.name + ": " + request.use.name + ".combine");
+    std::vector<ColormapTerm> terms = first->terms();
+    terms.emplace_back(std::move(s));
+    return std::make_shared<ColormapShader>(std::move(terms), product, first->base());
+  }
+  return std::make_shared<ColormapShader>(std::vector<ColormapTerm>{ColormapTerm(std::move(s))}, product, request.base);
 }
 
 }  // namespace

@@ -12,6 +12,12 @@
 //   filtered  colormap: E[C(f)] under N(mean, sigma^2) (Eq. 10); colormap-height: V_bar C_h_bar (Eqs. 13-18)
 //             with the driver's statistics added to the heights; colormap-slope: C_s_bar (Eq. 20) with the
 //             moment-matched visible slope distribution (slope_filtering.h).
+// Sec. 6: the colour-map effects of one material combine into one albedo (the second and third join the first's
+// shader), with the scene options `combine` (the same in all of them) and `weight` (kappa):
+//   linear   albedo = k0 C0_bar V_bar + k1 C_h_bar + k2 C_s_bar V_bar (k: the effects' weights; an absent case
+//            weighs 0; V_bar is the height effect's visibility, 1 without one), the paper's I / (L rho);
+//   product  albedo = C0_bar C_h_bar C_s_bar (absent cases are 1; weights unused), the paper's form.
+// A material with one colour-map effect gets weight * its term (weight 1: the term itself).
 // The light direction w_i of the height case is the first directional light, else the first point light, else
 // the surface normal (distant light only).
 //
@@ -19,8 +25,8 @@
 // level 0, the noise itself) and integrates the unresolved microsurface numerically at that point: heights
 // (Eq. 14 with the exact Smith visibility; its denominator integrates the whole height law, so it does not
 // depend on the driver) and slopes (Eq. 19), by Gauss-Legendre quadrature (heights: 256 nodes over +-8
-// sigma_h; slopes: a 48 x 48 grid over +-6 sigma; colormap_reference.h). The renderer averages the rays of the pixel,
-// which filters the driver.
+// sigma_h; slopes: a 48 x 48 grid over +-6 sigma; colormap_reference.h), combined the same way with the exact
+// V_bar at the point. The renderer averages the rays of the pixel, which filters the driver.
 #pragma once
 
 #include "libbake/eval/effect_shaders.h"

@@ -62,9 +62,7 @@ Vec3 ExactCreaseNormals::side_aware_normal(const Vec2& p, const std::vector<uint
   const auto texel = [&](int64_t i, int64_t j) {
     return map_.texels[size_t(clamp_y(j)) * map_.width + size_t(clamp_x(i))].cast<double>().eval();
   };
-  const auto centre = [&](int64_t i, int64_t j) {
-    return Vec2(double(clamp_x(i)) + 0.5, double(clamp_y(j)) + 0.5);
-  };
+  const auto centre = [&](int64_t i, int64_t j) { return Vec2(double(clamp_x(i)) + 0.5, double(clamp_y(j)) + 0.5); };
   const double fx = p.x() - 0.5, fy = p.y() - 0.5;
   const int64_t x0 = int64_t(std::floor(fx)), y0 = int64_t(std::floor(fy));
   const double ax = fx - double(x0), ay = fy - double(y0);

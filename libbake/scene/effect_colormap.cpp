@@ -33,6 +33,11 @@ void parse_common(JsonObjectReader& r, const std::filesystem::path& folder, Effe
   if (const auto* v = r.optional("sigma_max")) o["sigma_max"] = float(json_number(*v, r.child("sigma_max"), 0, 1e6));
   o["mode"] = "filtered";
   if (const auto* v = r.optional("mode")) o["mode"] = json_choice(*v, r.child("mode"), {"naive", "filtered"});
+  // Sec. 6: how the colour-map effects of one material combine (libbake/eval/colormap_effect.h).
+  o["combine"] = "linear";
+  if (const auto* v = r.optional("combine")) o["combine"] = json_choice(*v, r.child("combine"), {"linear", "product"});
+  o["weight"] = 1.0;
+  if (const auto* v = r.optional("weight")) o["weight"] = json_number(*v, r.child("weight"), -1e3, 1e3);
 }
 
 // The driver f: an image (first channel) or procedural noise, mapped as offset + scale * f.

@@ -37,16 +37,16 @@ EffectInfo crease_effect() {
     CreaseBakeOptions options;
     options.smooth_iterations = use.options.at("smooth_iterations");
     options.band = use.options.at("band");
-    return std::vector<AssetRecipe>{
-        {"crease",
-         {{"smooth_iterations", options.smooth_iterations}, {"band", options.band}},
-         {map, {curves, std::nullopt}},
-         [map, curves, options](Progress& progress) {
-           const LoadedNormalMap loaded = load_normal_map(map.path, map.normal_map->load_options());
-           const CurveSet set = load_curves(curves, loaded.map.width, loaded.map.height);
-           return crease_asset_writer(bake_crease(loaded.map, set, options, progress), options, loaded.record,
-                                      curves_record(curves, set));
-         }}};
+    return std::vector<AssetRecipe>{{"crease",
+                                     {{"smooth_iterations", options.smooth_iterations}, {"band", options.band}},
+                                     {map, {curves, std::nullopt}},
+                                     [map, curves, options](Progress& progress) {
+                                       const LoadedNormalMap loaded =
+                                           load_normal_map(map.path, map.normal_map->load_options());
+                                       const CurveSet set = load_curves(curves, loaded.map.width, loaded.map.height);
+                                       return crease_asset_writer(bake_crease(loaded.map, set, options, progress),
+                                                                  options, loaded.record, curves_record(curves, set));
+                                     }}};
   };
   return e;
 }

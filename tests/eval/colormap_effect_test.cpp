@@ -8,6 +8,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "formats/error.h"
 #include "libbake/eval/image_difference.h"
 #include "libbake/eval/renderer.h"
 #include "libbake/image/image_io.h"
@@ -122,6 +123,88 @@ TEST(ColormapEffect, ImageDriverFilteredIsCloserToTheReferenceThanNaive_MomentPy
                e_naive = masked_rmse(testing::render(naive_scene, 1, 0), reference, all);
   std::cout << "image driver: RMSE to reference: naive " << e_naive << ", filtered " << e_filtered << "\n";
   EXPECT_LT(e_filtered, 0.7 * e_naive);
+}
+
+// Sec. 6 combinations: material "a" (the receding plane) names `effects` (each given its mode and the stripes);
+// "b" and "c" are plain.
+json combination_scene(const std::string& mode, json effects) {
+  for (json& e : effects) {
+    e["mode"] = mode;
+    e["colormap"] = "stripes.json";
+  }
+  const json plain = {{"albedo", 0.3}, {"specular", {{"roughness", 0.4}, {"f0", 0.04}}}};
+  json a = plain;
+  a["effects"] = effects;
+  json s = testing::small_scene({{"a", a}, {"b", plain}, {"c", plain}}, 48, 30);
+  s["camera"]["position"] = {0.0, 0.8, 4.0};
+  s["camera"]["look_at"] = {0.0, 0.5, 0.0};
+  return s;
+}
+
+const json kNoise = {
+    {"name", "colormap"}, {"noise", {{"cells", {4, 4}}, {"octaves", 4}, {"seed", 7}}}, {"scale", 0.8}, {"offset", 0.5}};
+const json kSlope = {{"name", "colormap-slope"}, {"slope_sigma", 0.4}, {"offset", 0.5}};
+
+json weighted(json effect, double weight, const std::string& combine = "linear") {
+  effect["weight"] = weight;
+  effect["combine"] = combine;
+  return effect;
+}
+
+Image render_combination(const ScratchDir& dir, const std::string& mode, const json& effects, uint32_t reference) {
+  testing::write_json(dir / "combination.json", combination_scene(mode, effects));
+  const Scene s = load_scene(dir / "combination.json");
+  testing::bake_scene(s);
+  return testing::render(s, 1, reference);
+}
+
+// Radiance is affine in the albedo (Lambert plus an albedo-free specular), so the linear combination's image is
+// k0 (I_0 - S) + k2 (I_s - S) + S with S the image at albedo 0 (both weights 0): an exact check of the plumbing,
+// filtered and in the reference.
+TEST(ColormapEffect, LinearCombinationIsTheWeightedSumOfItsTerms_FilteredAndReference) {
+  ScratchDir dir("colormap_linear");
+  write_stripes(dir / "stripes.json");
+  const double k0 = 0.7, k2 = 0.45;
+  for (const uint32_t reference : {0u, 2u}) {
+    const Image combined = render_combination(dir, "filtered", {weighted(kNoise, k0), weighted(kSlope, k2)}, reference);
+    const Image noise = render_combination(dir, "filtered", json::array({kNoise}), reference);
+    const Image slope = render_combination(dir, "filtered", json::array({kSlope}), reference);
+    const Image none = render_combination(dir, "filtered", {weighted(kNoise, 0), weighted(kSlope, 0)}, reference);
+    double worst = 0.0, largest = 0.0;
+    for (size_t i = 0; i < combined.pixels.size(); ++i) {
+      const double s = none.pixels[i];
+      const double expected = k0 * (noise.pixels[i] - s) + k2 * (slope.pixels[i] - s) + s;
+      worst = std::max(worst, std::abs(combined.pixels[i] - expected));
+      largest = std::max(largest, std::abs(expected));
+    }
+    EXPECT_LT(worst, 1e-5 * std::max(1.0, largest)) << "reference " << reference;
+    EXPECT_GT(compare_images(combined, noise).rmse, 1e-3);  // the slope term changed the picture
+  }
+}
+
+TEST(ColormapEffect, CombinationsFilteredAreCloserToTheReferenceThanNaive_LinearAndProduct) {
+  ScratchDir dir("colormap_combinations");
+  write_stripes(dir / "stripes.json");
+  for (const std::string combine : {"linear", "product"}) {
+    const json effects = {weighted(kNoise, 0.6, combine), weighted(kSlope, 0.4, combine)};
+    const Image reference = render_combination(dir, "filtered", effects, 8);
+    const double e_filtered = compare_images(render_combination(dir, "filtered", effects, 0), reference).rmse;
+    const double e_naive = compare_images(render_combination(dir, "naive", effects, 0), reference).rmse;
+    std::cout << combine << " combination: RMSE to reference: naive " << e_naive << ", filtered " << e_filtered << "\n";
+    EXPECT_LT(e_filtered, 0.7 * e_naive) << combine;
+  }
+}
+
+TEST(ColormapEffect, EffectsOfOneMaterialMustCombineTheSameWay) {
+  ScratchDir dir("colormap_combine_mismatch");
+  write_stripes(dir / "stripes.json");
+  try {
+    render_combination(dir, "filtered", {weighted(kNoise, 1, "linear"), weighted(kSlope, 1, "product")}, 0);
+    ADD_FAILURE() << "accepted linear + product";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::invalid_input);
+    EXPECT_NE(e.message().find("colormap-slope.combine"), std::string::npos) << e.message();
+  }
 }
 
 }  // namespace

@@ -59,8 +59,8 @@ void write_inputs(const ScratchDir& dir) {
 // A camera close above a 2 x 2 plane carrying the map once: about 6 pixels per texel, the crease across the view.
 json magnified_scene(const json& effect) {  // null: no effect
   const json effects = effect.is_null() ? json::array() : json::array({effect});
-  return {{"camera", {{"position", {0.0, 1.6, 0.9}}, {"look_at", {0.0, 0.0, 0.0}}, {"fov_y", 50}, {"width", 96},
-                      {"height", 72}}},
+  return {{"camera",
+           {{"position", {0.0, 1.6, 0.9}}, {"look_at", {0.0, 0.0, 0.0}}, {"fov_y", 50}, {"width", 96}, {"height", 72}}},
           {"shapes", {{{"type", "plane"}, {"size", {2.0, 2.0}}, {"uv_scale", {1.0, 1.0}}, {"material", "a"}}}},
           {"materials",
            {{"a",
@@ -86,11 +86,8 @@ TEST(CreaseEffect, BakesOneCreaseAssetWithCanonicalOptions) {
   ASSERT_EQ(plan[0].recipe.inputs.size(), 2u);
   EXPECT_EQ(plan[0].recipe.inputs[1].path, dir / "line.json");
   const json& options = scene.materials.at("a").effects.at(0).options;
-  EXPECT_EQ(options.at("profile"), (json{{"kind", "v"},
-                                         {"depth", 1.0},
-                                         {"width", 2.0},
-                                         {"blend_start", 0.0},
-                                         {"blend_end", 2.0}}));
+  EXPECT_EQ(options.at("profile"),
+            (json{{"kind", "v"}, {"depth", 1.0}, {"width", 2.0}, {"blend_start", 0.0}, {"blend_end", 2.0}}));
   testing::bake_scene(scene);  // and the baked file is what the plan asked for: up to date
   EXPECT_EQ(check_asset_freshness(plan[0], default_asset_folder(scene) / plan[0].file_name).state,
             AssetState::up_to_date);
