@@ -116,8 +116,8 @@ int main(int argc, char** argv) {
           if (brute.values[i] != 0.0) worst = std::max(worst, std::abs(t16.values[i] / brute.values[i] - 1.0));
         const double texels = width * width;
         std::printf(
-            "| %s | %s | %.0f^2 | %.3f | %.0f | %.1f | %.2f | %.0f | %.0f | %.2f | %.0f | %.2f | %.0f | %.1e |\n",
-            kind.c_str(), reflected ? "reflected" : "any", width, sigma_r, t16.per_second, brute.per_second,
+            "| %s %u^2 | %s | %.0f^2 | %.3f | %.0f | %.1f | %.2f | %.0f | %.0f | %.2f | %.0f | %.2f | %.0f | %.1e |\n",
+            kind.c_str(), side, reflected ? "reflected" : "any", width, sigma_r, t16.per_second, brute.per_second,
             t16.per_second / brute.per_second, texels, t16.mean_nodes, t8.mean_nodes / t16.mean_nodes, t8.per_second,
             t16.per_second / t8.per_second, t16.mean_elements, worst);
         std::fflush(stdout);
