@@ -39,7 +39,7 @@ difference between traversal and brute force over the queries both answered (the
 ${rows}
 
 Reading the table. The traversal pays for range queries (four RMQ reads and a blend per node), so it wins only
-where it prunes: with "any" half vectors it answers 4x (bumps) to 10-27x (scratches) more queries per second
+where it prunes: with "any" half vectors it answers 3-6x (bumps) to 20-31x (scratches) more queries per second
 than brute force, growing with the footprint; with "reflected" half vectors most of the footprint reflects
 s (scratches: nearly every flat texel has the same normal; bumps: the leaf intervals, 3 sigma_h of a steep
 slope, are wide), pruning finds little to drop and the traversal is 0.6-2x brute force. The node bounds
