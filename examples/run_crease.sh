@@ -4,7 +4,8 @@
 # scene's crease asset, renders it with the reconstruction (the evaluator, 4 samples per pixel), with --reference
 # (the exact side-aware normals from the raw map and curves, 4 x 4 rays per pixel) and with plain normal mapping
 # (the same scene without the effect, examples/scenes/crease_plain.json: bilinear, MIP-mapped normals), compares
-# both with the reference and prints the render times. Writes EXR (linear) and PNG (for viewing) of each.
+# both with the reference and prints the render times. Writes EXR (linear) and PNG (for viewing) of each, rendered
+# once per format.
 #
 #   examples/run_crease.sh [MICROBAKE [OUT_DIR]]
 set -euo pipefail
@@ -20,12 +21,13 @@ out="$(cd "$out" && pwd)"
 
 "$exe" gen panels --size 256 --seed 1 -q -o "$maps/panels256.png" --creases "$maps/panels256.creases.json"
 "$exe" bake "$scene" --out-dir "$out/assets"
+# EXR to compare (linear), PNG to look at (examples/results/crease/scene_*.png are these PNGs).
 for ext in exr png; do
-  "$exe" render "$scene" --assets "$out/assets" --spp 4 -o "$out/crease.$ext"
-  "$exe" render "$scene" --reference 4 -o "$out/crease_reference.$ext"
-  "$exe" render "$plain" --spp 4 -o "$out/crease_plain.$ext"
+  "$exe" render "$scene" --assets "$out/assets" --spp 4 -o "$out/scene_crease.$ext"
+  "$exe" render "$scene" --reference 4 -o "$out/scene_reference.$ext"
+  "$exe" render "$plain" --spp 4 -o "$out/scene_plain.$ext"
 done
-for name in crease crease_plain; do
+for name in scene_crease scene_plain; do
   echo "== $name against the reference"
-  "$exe" compare "$out/$name.exr" "$out/crease_reference.exr"
+  "$exe" compare "$out/$name.exr" "$out/scene_reference.exr"
 done

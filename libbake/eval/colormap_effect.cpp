@@ -93,6 +93,7 @@ class ColormapTerm {
   explicit ColormapTerm(Settings s) : s_(std::move(s)) {}
   Case which() const { return s_.which; }
   double weight() const { return s_.weight; }
+  const Mat2& slope_covariance() const { return s_.surface.slopes.covariance; }
 
   // The term at the shading point into `terms` (the height case also sets V_bar).
   void evaluate(const ShadingContext& c, ColormapTerms& terms) const {
@@ -233,6 +234,13 @@ ShaderPtr make_colormap_shader(const EffectShaderRequest& request, Case which) {
                   "the colour-map effects of one material must combine the same way (linear or product)",
                   "materials." + request.material.name + ": " + request.use.name + ".combine");
     std::vector<ColormapTerm> terms = first->terms();
+    // Sec. 6 shades one microsurface: V_bar (height effect) and C_s_bar (slope effect) must see the same slopes.
+    for (const ColormapTerm& t : terms)
+      if (t.which() != Case::texture && s.which != Case::texture && t.slope_covariance() != s.surface.slopes.covariance)
+        throw Error(ExitCode::invalid_input,
+                    "the height and slope colour-map effects of one material describe one microsurface: give them "
+                    "the same slope_sigma",
+                    "materials." + request.material.name + ": " + request.use.name + ".slope_sigma");
     terms.emplace_back(std::move(s));
     return std::make_shared<ColormapShader>(std::move(terms), product, first->base());
   }

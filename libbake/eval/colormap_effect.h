@@ -17,7 +17,11 @@
 //   linear   albedo = k0 C0_bar V_bar + k1 C_h_bar + k2 C_s_bar V_bar (k: the effects' weights; an absent case
 //            weighs 0; V_bar is the height effect's visibility, 1 without one), the paper's I / (L rho);
 //   product  albedo = C0_bar C_h_bar C_s_bar (absent cases are 1; weights unused), the paper's form.
-// A material with one colour-map effect gets weight * its term (weight 1: the term itself).
+// A material with one colour-map effect gets weight * its term (weight 1: the term itself; product takes no
+// weights). The height and slope effects of one material must give the same slope_sigma (one microsurface), and
+// the colour-map effects come after every other effect of the material (effect_registry.h, sets_albedo). In both
+// forms the albedo carries the colour, so the Lambertian factor (the paper's rho) stays in the shading; the
+// paper's product form drops it, which only scales the image by the constant rho.
 // The light direction w_i of the height case is the first directional light, else the first point light, else
 // the surface normal (distant light only).
 //

@@ -9,16 +9,9 @@
 #include "formats/error.h"
 #include "libbake/crease/crease_profile_json.h"
 #include "libbake/eval/exact_crease_normals.h"
+#include "libbake/image/texture_taps.h"
 
 namespace mbk {
-namespace {
-
-Vec2 texel_point(const Vec2& uv, uint32_t width, uint32_t height) {
-  const double t = 1.0 - uv.y();
-  return Vec2((uv.x() - std::floor(uv.x())) * width, (t - std::floor(t)) * height);
-}
-
-}  // namespace
 
 ShaderPtr crease_effect_shader(const EffectShaderRequest& request) {
   const std::string where = "materials." + request.material.name + ": crease";
@@ -27,19 +20,19 @@ ShaderPtr crease_effect_shader(const EffectShaderRequest& request) {
   if (options.contains("profile")) profile = crease_profile_from_json(options.at("profile"), where + ".profile");
 
   if (request.mode == EvalMode::reference) {
-    if (!request.material.normal_map)
-      throw Error(ExitCode::invalid_input, "the crease effect needs the material's normal map", where);
     const NormalMapRef& ref = *request.material.normal_map;
     const std::filesystem::path curves = request.use.files.at("curves");
-    const auto exact = request.cache.get<ExactCreaseNormals>(
-        "exact crease|" + ref.path.string() + "|" + curves.string() + "|" + options.dump(), [&] {
-          LoadedNormalMap loaded = load_normal_map(ref.path, ref.load_options());
-          const CurveSet set = load_curves(curves, loaded.map.width, loaded.map.height);
-          return ExactCreaseNormals(std::move(loaded.map), curve_segments(set), profile);
-        });
+    const std::string key = "exact crease|" + ref.path.string() + "|" + convention_name(ref.convention) +
+                            (ref.repair ? "|repair|" : "|error|") + curves.string() + "|" +
+                            options.value("profile", nlohmann::json()).dump();
+    const auto exact = request.cache.get<ExactCreaseNormals>(key, [&] {
+      LoadedNormalMap loaded = load_normal_map(ref.path, ref.load_options());
+      const CurveSet set = load_curves(curves, loaded.map.width, loaded.map.height);
+      return ExactCreaseNormals(std::move(loaded.map), curve_segments(set), profile);
+    });
     const uint32_t w = exact->width(), h = exact->height();
     return std::make_shared<NormalMappedShader>(
-        [exact, w, h](const Vec2& uv, const UvFootprint&) { return exact->normal(texel_point(uv, w, h)); });
+        [exact, w, h](const Vec2& uv, const UvFootprint&) { return exact->normal(texel_coordinates(uv, w, h)); });
   }
 
   const std::filesystem::path& file = request.assets.at(0);
@@ -51,7 +44,7 @@ ShaderPtr crease_effect_shader(const EffectShaderRequest& request) {
     return read_crease_field(asset);
   });
   return std::make_shared<NormalMappedShader>([field, profile](const Vec2& uv, const UvFootprint&) {
-    const Vec2 p = texel_point(uv, field->width, field->height);
+    const Vec2 p = texel_coordinates(uv, field->width, field->height);
     const CreaseSample s = reconstruct_crease(*field, p.x(), p.y());
     double n[3] = {s.normal[0], s.normal[1], s.normal[2]};
     if (profile) crease_normal(s, *profile, n);

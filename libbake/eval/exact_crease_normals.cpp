@@ -19,8 +19,10 @@ ExactCreaseNormals::ExactCreaseNormals(NormalMap map, std::vector<CurveSegment> 
                                        std::optional<CreaseProfile> profile)
     : map_(std::move(map)), segments_(std::move(segments)), profile_(std::move(profile)) {
   if (profile_) reach_ = std::max({reach_, profile_->width, profile_->blend_end});
+  visibility_reach_ = 2.0 * std::sqrt(2.0) + 1e-9;  // the farthest centre of the 4 x 4 fallback
+  const double listed = std::max(reach_, visibility_reach_);
   reach_ += 1e-9;  // a point exactly at the reach still lists its segment
-  bucket_ = std::max(4.0, std::ceil(reach_));
+  bucket_ = std::max(4.0, std::ceil(listed));
   buckets_x_ = uint32_t(std::ceil(map_.width / bucket_)) + 1;
   buckets_y_ = uint32_t(std::ceil(map_.height / bucket_)) + 1;
   buckets_.resize(size_t(buckets_x_) * buckets_y_);
@@ -29,26 +31,27 @@ ExactCreaseNormals::ExactCreaseNormals(NormalMap map, std::vector<CurveSegment> 
   };
   for (uint32_t s = 0; s < segments_.size(); ++s) {
     const Vec2 lo = segments_[s].a.cwiseMin(segments_[s].b), hi = segments_[s].a.cwiseMax(segments_[s].b);
-    for (uint32_t by = bucket_of(lo.y() - reach_, buckets_y_); by <= bucket_of(hi.y() + reach_, buckets_y_); ++by)
-      for (uint32_t bx = bucket_of(lo.x() - reach_, buckets_x_); bx <= bucket_of(hi.x() + reach_, buckets_x_); ++bx)
+    for (uint32_t by = bucket_of(lo.y() - listed, buckets_y_); by <= bucket_of(hi.y() + listed, buckets_y_); ++by)
+      for (uint32_t bx = bucket_of(lo.x() - listed, buckets_x_); bx <= bucket_of(hi.x() + listed, buckets_x_); ++bx)
         buckets_[size_t(by) * buckets_x_ + bx].push_back(s);
   }
 }
 
-std::vector<uint32_t> ExactCreaseNormals::candidates(const Vec2& p) const {
+const std::vector<uint32_t>& ExactCreaseNormals::candidates(const Vec2& p) const {
   const auto index = [&](double v, uint32_t n) {
     return uint32_t(std::clamp(std::floor(v / bucket_), 0.0, double(n - 1)));
   };
   return buckets_[size_t(index(p.y(), buckets_y_)) * buckets_x_ + index(p.x(), buckets_x_)];
 }
 
-// The point sees the centre unless a segment has the two strictly on opposite sides of its line and itself
-// meets the line through them between them (touching counts: a curve through a centre hides it from one side).
+// The point sees the centre unless a segment has the two on different sides of its line and itself meets the
+// line through them between them. Sides follow the side map's rule (orient >= 0 is side +1), so a centre exactly
+// on a curve (a 45-degree crease through texel centres) belongs to side +1 only, as the bake's crossings, kept
+// off the samples, put every sample on one side (test: ExactCreaseNormals.CentresOnACurveBelongToOneSide).
 bool ExactCreaseNormals::visible(const Vec2& p, const Vec2& centre, const std::vector<uint32_t>& near) const {
   for (uint32_t s : near) {
     const Vec2 &a = segments_[s].a, &b = segments_[s].b;
-    const double o1 = orient(a, b, p), o2 = orient(a, b, centre);
-    if (!(o1 * o2 < 0.0)) continue;
+    if ((orient(a, b, p) >= 0.0) == (orient(a, b, centre) >= 0.0)) continue;
     const double o3 = orient(p, centre, a), o4 = orient(p, centre, b);
     if (o3 * o4 <= 0.0) return false;
   }
@@ -87,7 +90,7 @@ Vec3 ExactCreaseNormals::side_aware_normal(const Vec2& p, const std::vector<uint
 }
 
 CreaseSample ExactCreaseNormals::sample(const Vec2& p) const {
-  const std::vector<uint32_t> near = candidates(p);
+  const std::vector<uint32_t>& near = candidates(p);
   CreaseSample s;
   const Vec3 n = side_aware_normal(p, near);
   for (int c = 0; c < 3; ++c) s.normal[c] = n[c];

@@ -34,13 +34,14 @@ class ExactCreaseNormals {
   // +infinity when no segment is within reach(): the profile is flat there and the side does not matter.
   CreaseSample sample(const Vec2& p) const;
   // How far from a curve the distance is computed: the profile's width and blend end, and at least the 1.5
-  // texels within which a curve can hide a texel centre from a point.
+  // texels within which a curve can hide one of the four nearest texel centres from a point.
   double reach() const { return reach_; }
   uint32_t width() const { return map_.width; }
   uint32_t height() const { return map_.height; }
 
  private:
-  std::vector<uint32_t> candidates(const Vec2& p) const;  // segments whose box, grown by reach_, holds p
+  // The segments whose box, grown by max(reach_, visibility_reach_), holds p: every segment within either.
+  const std::vector<uint32_t>& candidates(const Vec2& p) const;
   bool visible(const Vec2& p, const Vec2& centre, const std::vector<uint32_t>& near) const;
   Vec3 side_aware_normal(const Vec2& p, const std::vector<uint32_t>& near) const;
 
@@ -48,6 +49,7 @@ class ExactCreaseNormals {
   std::vector<CurveSegment> segments_;
   std::optional<CreaseProfile> profile_;
   double reach_ = 1.5;
+  double visibility_reach_ = 0.0;
   // Uniform grid of buckets over the map, each listing the segments whose grown box overlaps it.
   double bucket_ = 4.0;
   uint32_t buckets_x_ = 1, buckets_y_ = 1;

@@ -15,10 +15,15 @@ uint32_t wrap_index(int64_t i, int64_t n) {
 
 }  // namespace
 
-std::array<TextureTap, 4> bilinear_taps(uint32_t width, uint32_t height, const Vec2& uv) {
+Vec2 texel_coordinates(const Vec2& uv, uint32_t width, uint32_t height) {
   const double u = uv.x() - std::floor(uv.x());
   const double t = (1.0 - uv.y()) - std::floor(1.0 - uv.y());  // row coordinate as a fraction of H
-  const double fx = u * width - 0.5, fy = t * height - 0.5;
+  return Vec2(u * width, t * height);
+}
+
+std::array<TextureTap, 4> bilinear_taps(uint32_t width, uint32_t height, const Vec2& uv) {
+  const Vec2 p = texel_coordinates(uv, width, height);
+  const double fx = p.x() - 0.5, fy = p.y() - 0.5;
   const double x0 = std::floor(fx), y0 = std::floor(fy);
   const double ax = fx - x0, ay = fy - y0;
   const uint32_t xa = wrap_index(int64_t(x0), width), xb = wrap_index(int64_t(x0) + 1, width);

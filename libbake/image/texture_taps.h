@@ -17,6 +17,10 @@ struct TextureTap {
   double weight;  // the four weights sum to 1
 };
 
+// Texel coordinates of uv (x right, y = row down, the map [0, W] x [0, H]; texel centres at integer + 0.5):
+// (frac(u) W, frac(1 - v) H). Only the fractional part of uv matters (tiling).
+Vec2 texel_coordinates(const Vec2& uv, uint32_t width, uint32_t height);
+
 // The sample point in "centre" coordinates is (u W - 0.5, (1 - v) H - 0.5); only the fractional part of uv
 // matters (tiling), taken before scaling so that huge uv keep their texel index. uv must be finite, the size
 // non-zero (callers check).

@@ -37,7 +37,11 @@ void parse_common(JsonObjectReader& r, const std::filesystem::path& folder, Effe
   o["combine"] = "linear";
   if (const auto* v = r.optional("combine")) o["combine"] = json_choice(*v, r.child("combine"), {"linear", "product"});
   o["weight"] = 1.0;
-  if (const auto* v = r.optional("weight")) o["weight"] = json_number(*v, r.child("weight"), -1e3, 1e3);
+  if (const auto* v = r.optional("weight")) {
+    if (o["combine"] == "product")
+      throw Error(ExitCode::invalid_input, "a product combination takes no weights", r.child("weight"));
+    o["weight"] = json_number(*v, r.child("weight"), -1e3, 1e3);
+  }
 }
 
 // The driver f: an image (first channel) or procedural noise, mapped as offset + scale * f.
@@ -105,6 +109,7 @@ std::vector<AssetRecipe> colormap_assets(const EffectUse& use) {
 EffectInfo colormap_effect_of(ColormapCase which) {
   EffectInfo e;
   e.needs_normal_map = false;
+  e.sets_albedo = true;
   e.parse_options = [which](JsonObjectReader& r, const std::filesystem::path& folder) {
     EffectUse use;
     parse_common(r, folder, use);

@@ -44,6 +44,10 @@ struct EffectInfo {
   std::string name;
   std::string summary;
   bool needs_normal_map = true;
+  // Whether it colours the material (the colour-map effects): those come last in a material's list, since the
+  // effects that supply normals or reflect light (mip, crease, glints) build their shader afresh and would drop a
+  // colour set before them; consecutive colour effects combine (libbake/eval/colormap_effect.h).
+  bool sets_albedo = false;
   std::function<EffectUse(JsonObjectReader& options, const std::filesystem::path& scene_folder)> parse_options;
   std::function<std::vector<AssetRecipe>(const Material&, const EffectUse&)> assets;
 };

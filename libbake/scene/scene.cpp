@@ -103,8 +103,13 @@ EffectUse parse_effect(const nlohmann::json& v, const std::string& at, const Mat
       v.is_object() ? json_string(options.required("name"), options.child("name")) : json_string(v, at);
   const EffectInfo* effect = find_effect(name);
   if (!effect) fail("unknown effect '" + name + "' (known effects: " + known_effect_names() + ")", at);
-  for (const auto& e : m.effects)
+  for (const auto& e : m.effects) {
     if (e.name == name) fail("effect '" + name + "' is listed twice", at);
+    if (find_effect(e.name)->sets_albedo && !effect->sets_albedo)
+      fail("effect '" + name + "' must be listed before the colour-map effects ('" + e.name +
+               "' colours the shading built before it, which '" + name + "' would replace)",
+           at);
+  }
   if (effect->needs_normal_map && !m.normal_map) fail("effect '" + name + "' needs a normal_map in this material", at);
   EffectUse use;
   if (effect->parse_options) use = effect->parse_options(options, folder);

@@ -182,11 +182,74 @@ TEST(ColormapEffect, LinearCombinationIsTheWeightedSumOfItsTerms_FilteredAndRefe
   }
 }
 
+// With a height effect the linear form weighs C0 and Cs by its visibility V_bar. A white colour map makes the height
+// term C_h_bar = V_bar itself, so from the images of each effect alone (and of albedo 0 and 1) the per-pixel
+// albedos C0, V and Cs are known, and the combination's image must be (k0 V C0 + k1 V + k2 V Cs) D + S, where D is
+// the image at albedo 1 minus S. One ray per pixel, so every image samples the same points.
+TEST(ColormapEffect, LinearCombinationWeighsC0AndCsByTheHeightVisibility) {
+  ScratchDir dir("colormap_visibility");
+  write_stripes(dir / "stripes.json");
+  testing::write_json(
+      dir / "white.json",
+      {{"encoding", "linear"}, {"stops", {{{"at", 0}, {"color", {1, 1, 1}}}, {{"at", 1}, {"color", {1, 1, 1}}}}}});
+  const json height = {
+      {"name", "colormap-height"}, {"noise", {{"cells", {2, 2}}}}, {"sigma_h", 0.1}, {"slope_sigma", 0.4}};
+  const double k0 = 0.6, k1 = 0.3, k2 = 0.5;
+  // The effects on the stripes, except those whose name is `white`, which read the white map.
+  const auto render_with = [&](json effects, const std::string& white) {
+    json scene = combination_scene("filtered", effects);
+    for (json& e : scene["materials"]["a"]["effects"])
+      if (e["name"] == white) e["colormap"] = "white.json";
+    testing::write_json(dir / "v.json", scene);
+    const Scene loaded = load_scene(dir / "v.json");
+    testing::bake_scene(loaded);
+    return testing::render(loaded, 1);
+  };
+  const Image combined =
+      render_with({weighted(kNoise, k0), weighted(height, k1), weighted(kSlope, k2)}, "colormap-height");
+  const Image c0 = render_with(json::array({kNoise}), ""), v = render_with(json::array({height}), "colormap-height"),
+              cs = render_with(json::array({kSlope}), "");
+  const Image zero = render_with(json::array({weighted(kNoise, 0)}), ""),
+              one = render_with(json::array({kNoise}), "colormap");
+  size_t checked = 0;
+  double worst = 0.0;
+  for (size_t i = 0; i < combined.pixels.size(); ++i) {
+    const double S = zero.pixels[i], D = one.pixels[i] - S;
+    if (!(D > 1e-3)) continue;
+    ++checked;
+    const double a0 = (c0.pixels[i] - S) / D, av = (v.pixels[i] - S) / D, as = (cs.pixels[i] - S) / D;
+    const double expected = (k0 * av * a0 + k1 * av + k2 * av * as) * D + S;
+    worst = std::max(worst, std::abs(combined.pixels[i] - expected) / std::max(1e-2, std::abs(expected)));
+  }
+  EXPECT_GT(checked, combined.pixels.size() / 4);
+  EXPECT_LT(worst, 1e-4);
+}
+
+TEST(ColormapEffect, HeightAndSlopeOfOneMaterialShareTheirSlopesAndProductsTakeNoWeights) {
+  ScratchDir dir("colormap_one_surface");
+  write_stripes(dir / "stripes.json");
+  json height = {{"name", "colormap-height"}, {"slope_sigma", 0.2}};
+  try {
+    render_combination(dir, "filtered", {height, kSlope}, 0);
+    ADD_FAILURE() << "accepted two microsurfaces";
+  } catch (const Error& e) {
+    EXPECT_NE(e.message().find("same slope_sigma"), std::string::npos) << e.message();
+  }
+  try {
+    render_combination(dir, "filtered", json::array({weighted(kNoise, 0.5, "product")}), 0);
+    ADD_FAILURE() << "accepted a weight in a product";
+  } catch (const Error& e) {
+    EXPECT_NE(e.message().find("product combination takes no weights"), std::string::npos) << e.message();
+  }
+}
+
 TEST(ColormapEffect, CombinationsFilteredAreCloserToTheReferenceThanNaive_LinearAndProduct) {
   ScratchDir dir("colormap_combinations");
   write_stripes(dir / "stripes.json");
   for (const std::string combine : {"linear", "product"}) {
-    const json effects = {weighted(kNoise, 0.6, combine), weighted(kSlope, 0.4, combine)};
+    json effects = {weighted(kNoise, 0.6, combine), weighted(kSlope, 0.4, combine)};
+    if (combine == "product")
+      for (json& e : effects) e.erase("weight");
     const Image reference = render_combination(dir, "filtered", effects, 8);
     const double e_filtered = compare_images(render_combination(dir, "filtered", effects, 0), reference).rmse;
     const double e_naive = compare_images(render_combination(dir, "naive", effects, 0), reference).rmse;
@@ -199,7 +262,9 @@ TEST(ColormapEffect, EffectsOfOneMaterialMustCombineTheSameWay) {
   ScratchDir dir("colormap_combine_mismatch");
   write_stripes(dir / "stripes.json");
   try {
-    render_combination(dir, "filtered", {weighted(kNoise, 1, "linear"), weighted(kSlope, 1, "product")}, 0);
+    json product = kSlope;
+    product["combine"] = "product";
+    render_combination(dir, "filtered", {weighted(kNoise, 1, "linear"), product}, 0);
     ADD_FAILURE() << "accepted linear + product";
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ExitCode::invalid_input);

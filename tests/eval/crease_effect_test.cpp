@@ -143,6 +143,33 @@ TEST(ExactCreaseNormals, NeverReadAcrossTheCurveAndMeasureTheExactDistance) {
   EXPECT_GT(near_curve, 1000);
 }
 
+// Curves through texel centres (along the row of centres y = 8.5, and at 45 degrees through (i + 0.5, i + 0.5)): a
+// centre on the curve belongs to side +1 alone (the side map's rule, orient >= 0), so no point reads a normal from
+// the other side, even next to the curve.
+TEST(ExactCreaseNormals, CentresOnACurveBelongToOneSide) {
+  for (const auto& [a, b] : {std::pair{Vec2(0.0, 8.5), Vec2(16.0, 8.5)}, std::pair{Vec2(0.5, 0.5), Vec2(15.5, 15.5)}}) {
+    const auto side = [&](const Vec2& p) {
+      return (b.x() - a.x()) * (p.y() - a.y()) - (b.y() - a.y()) * (p.x() - a.x()) >= 0.0;
+    };
+    NormalMap m;
+    m.width = m.height = kSide;
+    for (uint32_t row = 0; row < kSide; ++row)
+      for (uint32_t x = 0; x < kSide; ++x)
+        m.texels.push_back((side(Vec2(x + 0.5, row + 0.5)) ? kRight : kLeft).cast<float>());
+    const ExactCreaseNormals exact(m, {{a, b}}, std::nullopt);
+    std::mt19937_64 rng(9);
+    std::uniform_real_distribution<double> coord(1.0, double(kSide) - 1.0), offset(-0.6, 0.6);
+    const Vec2 along = (b - a).normalized(), across(-along.y(), along.x());
+    for (int k = 0; k < 5000; ++k) {
+      // Points near the curve (the hard case) and anywhere.
+      const Vec2 p =
+          k % 2 ? Vec2(coord(rng), coord(rng))
+                : a + (b - a).norm() * std::clamp(coord(rng) / kSide, 0.05, 0.95) * along + offset(rng) * across;
+      EXPECT_NEAR(exact.normal(p).dot(side(p) ? kRight : kLeft), 1.0, 1e-12) << p.transpose();
+    }
+  }
+}
+
 TEST(ExactCreaseNormals, AProfileShapesTheNormalsNearTheCurveOnly) {
   CreaseProfile v;  // a groove 1 deep over 2 texels, blended into the map from 1 to 2 texels away
   v.kind = CreaseProfileKind::v;
@@ -163,6 +190,22 @@ TEST(ExactCreaseNormals, AProfileShapesTheNormalsNearTheCurveOnly) {
   // Beyond blend_end the map's normal of the point's side.
   EXPECT_NEAR(exact.normal(mid + 3.0 * right).dot(kRight), 1.0, 1e-12);
   EXPECT_NEAR(exact.normal(mid - 3.0 * right).dot(kLeft), 1.0, 1e-12);
+}
+
+TEST(CreaseEffect, MustComeBeforeTheColourMapEffects) {
+  ScratchDir dir("crease_order");
+  write_inputs(dir);
+  json s = magnified_scene(json());
+  s["materials"]["a"]["effects"] = {{{"name", "colormap"}, {"colormap", "c.json"}},
+                                    {{"name", "crease"}, {"curves", "line.json"}}};
+  testing::write_json(dir / "s.json", s);
+  try {
+    load_scene(dir / "s.json");
+    ADD_FAILURE() << "accepted crease after colormap";
+  } catch (const Error& e) {
+    EXPECT_NE(e.message().find("must be listed before the colour-map effects"), std::string::npos) << e.message();
+    EXPECT_NE(e.message().find("effects[1]"), std::string::npos) << e.message();
+  }
 }
 
 TEST(CreaseEffect, MagnifiedCreaseIsCloserToTheReferenceThanBilinearNormals) {
