@@ -1,0 +1,52 @@
+// The exemplar graph of [Han08] (C. Han's thesis, ch. 4; Han, Risser, Ramamoorthi, Grinspun, "Multiscale texture
+// synthesis", SIGGRAPH 2008): a few small exemplars linked by scale relations describing a texture of unbounded
+// extent and detail. Sec. 4.1: a reflexive, directed graph; an edge (i, j, r) says a texel of exemplar i is 2^r times
+// as wide as a texel of exemplar j; every exemplar has an implicit self-loop with r = 0; loops are allowed (a
+// self-loop with r > 0 is an infinite zoom); r < r_max so that source and destination scales overlap.
+//
+// The file (JSON; unknown keys are errors naming their path):
+//   {"exemplars": [{"id": "rock", "path": "rock.png"}, ...],   paths relative to the graph file
+//    "root": "rock",                                            the coarsest-level start of synthesis
+//    "edges": [{"source": "rock", "destination": "pebbles", "r": 2}, ...]}
+// Exemplars are images OpenImageIO reads (colour images or normal maps), all of one size m x m with m = 2^L a
+// power of two in [4, 4096] (Sec. 4.1 assumes m = 2^L) and one channel count. r is an integer, 0 <= r < L
+// (r_max = L: with r >= L no stack level of the source has a destination level, Sec. 5.2.1.2); an explicit edge
+// (i, i, 0) repeats the implicit one and is refused, as are duplicate edges. Every exemplar must be reachable from
+// the root.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace mbk {
+
+struct GraphEdge {
+  uint32_t source = 0, destination = 0;  // exemplar indices
+  uint32_t r = 0;                        // the source texel is 2^r destination texels wide
+};
+
+struct ExemplarGraph {
+  struct Exemplar {
+    std::string id;
+    std::string path_as_written;
+    std::filesystem::path path;  // resolved against the graph file's folder
+  };
+  std::vector<Exemplar> exemplars;
+  uint32_t root = 0;
+  std::vector<GraphEdge> edges;  // as listed, implicit self-loops not included
+};
+
+// Parses and checks the structure (ids, root, edges, reachability; not the images). Error(invalid_input) naming
+// `file` and the JSON path. `folder` resolves relative exemplar paths.
+ExemplarGraph parse_exemplar_graph(const nlohmann::json& graph, const std::string& file,
+                                   const std::filesystem::path& folder);
+// Reads and parses a graph file. Error(io_failure) when unreadable, invalid_input when malformed.
+ExemplarGraph load_exemplar_graph(const std::filesystem::path& file);
+
+// Checks r < L (r_max = L for exemplars of 2^L texels a side) for every edge; Error(invalid_input) naming the edge.
+void check_edge_scales(const ExemplarGraph& graph, uint32_t L, const std::string& file);
+
+}  // namespace mbk

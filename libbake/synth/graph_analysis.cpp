@@ -1,0 +1,114 @@
+// Exemplar-graph analysis (see graph_analysis.h).
+#include "libbake/synth/graph_analysis.h"
+
+#include <algorithm>
+
+#include "libbake/core/parallel.h"
+#include "libbake/synth/neighbourhood_pca.h"
+#include "libbake/synth/neighbourhood_search.h"
+
+namespace mbk {
+namespace {
+
+constexpr uint32_t kNearestConsidered = 16;  // neighbours among which the dispersed candidates are chosen
+
+uint32_t torus_distance(uint32_t a, uint32_t b, uint32_t m) {
+  const uint32_t d = a > b ? a - b : b - a;
+  return std::min(d, m - d);
+}
+
+}  // namespace
+
+void stack_neighbourhood(const Image& level, uint32_t h, uint32_t x, uint32_t y, float* out) {
+  const int64_t m = level.width, r = kSynthNeighbourhood / 2;
+  for (int64_t dy = -r; dy <= r; ++dy)
+    for (int64_t dx = -r; dx <= r; ++dx) {
+      const uint32_t sx = uint32_t(((int64_t(x) + dx * h) % m + m) % m);
+      const uint32_t sy = uint32_t(((int64_t(y) + dy * h) % m + m) % m);
+      for (uint32_t c = 0; c < level.channels; ++c) *out++ = level.at(sx, sy, c);
+    }
+}
+
+GraphAnalysis analyse_graph(const ExemplarGraph& graph, const std::vector<Image>& exemplars,
+                            const GraphAnalysisOptions& options, Progress& progress) {
+  GraphAnalysis a;
+  a.side = exemplars.at(0).width;
+  a.channels = exemplars[0].channels;
+  a.K = options.candidates;
+  const uint32_t m = a.side, ch = a.channels, dims = kSynthNeighbourhood * kSynthNeighbourhood * ch;
+  const size_t texels = size_t(m) * m;
+  for (const Image& e : exemplars) a.stacks.push_back(build_gaussian_stack(e));
+  a.levels = a.stacks[0].levels;
+  a.admissible = admissible_levels(graph, a.levels);
+  const uint32_t E = uint32_t(exemplars.size());
+  a.candidates.assign(size_t(E) * a.levels * texels * a.K, SynthCandidate{});
+  a.transfer.assign(a.candidates.size() * ch, 0.0f);
+  a.kept_variance.assign(size_t(E) * a.levels, 1.0);
+
+  // Every level's neighbourhood vectors, once.
+  std::vector<std::vector<float>> vectors(size_t(E) * a.levels);
+  parallel_for(0, int64_t(vectors.size()), [&](int64_t s) {
+    const uint32_t i = uint32_t(s / a.levels), k = uint32_t(s % a.levels);
+    std::vector<float>& v = vectors[size_t(s)];
+    v.resize(texels * dims);
+    for (uint32_t y = 0; y < m; ++y)
+      for (uint32_t x = 0; x < m; ++x)
+        stack_neighbourhood(a.stacks[i].images[k], a.stacks[i].spacing(k), x, y, &v[(size_t(y) * m + x) * dims]);
+  });
+
+  progress.start("analysis", uint64_t(E) * a.levels);
+  for (uint32_t i = 0; i < E; ++i)
+    for (uint32_t k = 0; k < a.levels; ++k) {
+      const std::vector<StackLevel>& pool_levels = a.admissible[i][k];
+      if (pool_levels.empty()) {
+        progress.advance();
+        continue;
+      }
+      std::vector<float> pool;
+      for (const StackLevel& l : pool_levels) {
+        const std::vector<float>& v = vectors[size_t(l.exemplar) * a.levels + l.level];
+        pool.insert(pool.end(), v.begin(), v.end());
+      }
+      const NeighbourhoodPca pca = fit_pca(pool, dims, options.pca_components);
+      a.kept_variance[size_t(i) * a.levels + k] = pca.kept_variance;
+      const uint32_t comps = uint32_t(pca.basis.cols());
+      const std::vector<float>& source = vectors[size_t(i) * a.levels + k];
+      const std::vector<uint32_t> nearest =
+          nearest_neighbours(pca.project(pool), pca.project(source), comps, kNearestConsidered);
+      const uint32_t found = uint32_t(nearest.size() / texels);
+      parallel_for(0, int64_t(texels), [&](int64_t t) {
+        const size_t base = a.candidate_index(i, k, 0, 0) + size_t(t) * a.K;
+        uint32_t chosen = 0;
+        for (uint32_t n = 0; n < found && chosen < a.K; ++n) {
+          const uint32_t p = nearest[size_t(t) * found + n];
+          const StackLevel& l = pool_levels[p / texels];
+          const uint32_t x = (p % texels) % m, y = uint32_t((p % texels) / m);
+          const uint32_t spread = std::max(2u, std::min(a.stacks[l.exemplar].spacing(l.level), m / 4));
+          bool dispersed = true;
+          for (uint32_t c = 0; c < chosen && dispersed; ++c) {
+            const SynthCandidate& q = a.candidates[base + c];
+            dispersed = !(q.exemplar == l.exemplar && q.level == l.level &&
+                          std::max(torus_distance(q.x, x, m), torus_distance(q.y, y, m)) < spread);
+          }
+          if (!dispersed) continue;
+          a.candidates[base + chosen] = {l.exemplar, l.level, x, y};
+          if (l.exemplar != i) {  // Sec. 5.3: b = mean(source - destination) over the neighbourhood
+            const float* s = &source[size_t(t) * dims];
+            const float* d = &vectors[size_t(l.exemplar) * a.levels + l.level][(size_t(y) * m + x) * dims];
+            for (uint32_t c = 0; c < ch; ++c) {
+              double sum = 0.0;
+              for (uint32_t j = 0; j < kSynthNeighbourhood * kSynthNeighbourhood; ++j)
+                sum += double(s[j * ch + c]) - d[j * ch + c];
+              a.transfer[(base + chosen) * ch + c] = float(sum / (kSynthNeighbourhood * kSynthNeighbourhood));
+            }
+          }
+          ++chosen;
+        }
+      });
+      progress.advance();
+    }
+  progress.finish();
+  return a;
+}
+
+}  // namespace mbk
