@@ -20,10 +20,10 @@
 //     per-pixel projection of the lighting; an order-2 environment carries no detail it would resolve).
 //
 // Roughness convention: the renderer's microfacet alpha (microfacet_brdf.h), used unchanged in D_l (the NDF
-// does the widening); G2's and the distant lobe's alpha' = sqrt(alpha^2 + 2 sigma^2) as in toksvig_effect.h. At level 0 the lookup is the exact NDF of the bilinear taps' normals, so for an
-// order high enough to resolve D the image equals plain normal mapping (test:
-// FilteredNdfEffects.FinestLevelEqualsPlainNormalMapping); a low order blurs sharp highlights (truncation).
-// Reference mode: `base` (the raw map supersampled is the ground truth).
+// does the widening); G2's and the distant lobe's alpha' = sqrt(alpha^2 + 2 sigma^2) as in toksvig_effect.h. At level 0
+// the lookup is the exact NDF of the bilinear taps' normals, so for an order high enough to resolve D the image equals
+// plain normal mapping (test: FilteredNdfEffects.FinestLevelEqualsPlainNormalMapping); a low order blurs sharp
+// highlights (truncation). Reference mode: `base` (the raw map supersampled is the ground truth).
 //
 // Shader port: per pixel, (L+1)^2 coefficients from the trilinear fetch, two SH evaluations (at l and h)
 // per light, rhat tables precomputed per material.

@@ -50,7 +50,8 @@ class VmfShader : public MaterialShader {
       for (size_t j = 0; j < lobes.size(); ++j) {
         Vec3 irradiance;
         for (int ch = 0; ch < 3; ++ch)  // Eq. (7.23)
-          irradiance[ch] = std::max(0.0, vmf_sh_lighting(light[size_t(ch)], rhat_diffuse_, lobes[j].kappa, lobes[j].mu));
+          irradiance[ch] =
+              std::max(0.0, vmf_sh_lighting(light[size_t(ch)], rhat_diffuse_, lobes[j].kappa, lobes[j].mu));
         out += lobes[j].alpha * (brdf.albedo.cwiseProduct(irradiance) / kPi +
                                  distant_specular(*c.lighting, brdf.f0, lobes[j].mu, v, widened[j].lobe.alpha));
       }

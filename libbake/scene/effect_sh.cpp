@@ -29,17 +29,17 @@ EffectInfo sh_effect() {
   };
   e.assets = [](const Material& m, const EffectUse& use) {
     const BakeInput map = normal_map_input(m);
-    const ShBakeOptions bake{use.options.at("order").get<int>(), parse_precision(use.options.at("precision").get<std::string>()),
+    const ShBakeOptions bake{use.options.at("order").get<int>(),
+                             parse_precision(use.options.at("precision").get<std::string>()),
                              parse_window(use.options.at("window").get<std::string>())};
     // The parameters the asset records (sh_asset.h) that the options decide.
     const nlohmann::json parameters = {
         {"order", bake.order}, {"precision", precision_name(bake.precision)}, {"window", window_name(bake.window)}};
-    return std::vector<AssetRecipe>{{"sh", parameters, {map}, [map, bake](Progress& progress) {
-                                       const LoadedNormalMap input =
-                                           load_normal_map(map.path, map.normal_map->load_options());
-                                       return sh_asset_writer(input, build_sh_pyramid(input.map, bake.order, progress),
-                                                              bake);
-                                     }}};
+    return std::vector<AssetRecipe>{
+        {"sh", parameters, {map}, [map, bake](Progress& progress) {
+           const LoadedNormalMap input = load_normal_map(map.path, map.normal_map->load_options());
+           return sh_asset_writer(input, build_sh_pyramid(input.map, bake.order, progress), bake);
+         }}};
   };
   return e;
 }

@@ -63,11 +63,11 @@ double mean(const Image& im) {
 
 // A camera close above a 2 x 2 plane carrying one 32 x 32 tile: ~5 pixels per texel (LOD 0 everywhere).
 json magnified(const json& effect, const json& specular) {
-  return plane_scene(effect, specular,
-                     {{"position", {0.0, 0.6, 0.6}}, {"look_at", {0.0, 0.0, 0.0}}, {"fov_y", 40}, {"width", 48},
-                      {"height", 36}},
-                     {{"size", {2.0, 2.0}}, {"uv_scale", {1.0, 1.0}}},
-                     {{"type", "point"}, {"position", {0.3, 1.0, -0.4}}, {"intensity", {2.0, 2.0, 2.0}}});
+  return plane_scene(
+      effect, specular,
+      {{"position", {0.0, 0.6, 0.6}}, {"look_at", {0.0, 0.0, 0.0}}, {"fov_y", 40}, {"width", 48}, {"height", 36}},
+      {{"size", {2.0, 2.0}}, {"uv_scale", {1.0, 1.0}}},
+      {{"type", "point"}, {"position", {0.3, 1.0, -0.4}}, {"intensity", {2.0, 2.0, 2.0}}});
 }
 
 // Gentle bumps, one period per tile: neighbouring normals differ by a few degrees.
@@ -96,18 +96,20 @@ TEST(FilteredNdfEffects, FinestLevelEqualsPlainNormalMapping) {
 
 // A plane receding to the horizon under a glossy highlight: footprints from ~4 texels to the whole map.
 json receding(const json& effect) {
-  return plane_scene(effect, {{"distribution", "ggx"}, {"roughness", 0.25}, {"f0", 0.5}},
-                     {{"position", {0.0, 0.4, 0.0}}, {"look_at", {0.0, 0.3, -8.0}}, {"fov_y", 20}, {"width", 48},
-                      {"height", 32}},
-                     {{"center", {0.0, 0.0, -50.0}}, {"size", {100.0, 100.0}}, {"uv_scale", {100.0, 100.0}}},
-                     {{"type", "point"}, {"position", {0.0, 2.0, -25.0}}, {"intensity", {300.0, 300.0, 300.0}}});
+  return plane_scene(
+      effect, {{"distribution", "ggx"}, {"roughness", 0.25}, {"f0", 0.5}},
+      {{"position", {0.0, 0.4, 0.0}}, {"look_at", {0.0, 0.3, -8.0}}, {"fov_y", 20}, {"width", 48}, {"height", 32}},
+      {{"center", {0.0, 0.0, -50.0}}, {"size", {100.0, 100.0}}, {"uv_scale", {100.0, 100.0}}},
+      {{"type", "point"}, {"position", {0.0, 2.0, -25.0}}, {"intensity", {300.0, 300.0, 300.0}}});
 }
 
 TEST(FilteredNdfEffects, RecedingPlaneIsCloserToTheReferenceThanPlainMip) {
   ScratchDir dir("filtered_receding");
   testing::write_bumpy_map(dir / "map.exr", 32, 32);
   const Image reference = render_with(dir, receding("mip"), 12);
-  const auto error = [&](const json& effect) { return compare_images(render_with(dir, receding(effect)), reference).rmse; };
+  const auto error = [&](const json& effect) {
+    return compare_images(render_with(dir, receding(effect)), reference).rmse;
+  };
   const double mip = error("mip"), toksvig = error("toksvig");
   const double sh = error({{"name", "sh"}, {"order", 16}}), vmf = error({{"name", "vmf"}, {"lobes", 4}});
   std::cout << "rmse vs reference: mip " << mip << ", toksvig " << toksvig << ", sh16 " << sh << ", vmf4 " << vmf
@@ -120,9 +122,8 @@ TEST(FilteredNdfEffects, RecedingPlaneIsCloserToTheReferenceThanPlainMip) {
 TEST(FilteredNdfEffects, CancellingNormalsStayFinite) {
   ScratchDir dir("filtered_vgroove");
   // A V-groove: alternate columns lean +x and -x almost to the horizon; two columns average to |n| ~ 0.1.
-  testing::write_normal_map(dir / "map.exr", 8, 8, [](uint32_t x, uint32_t) {
-    return Vec3(x % 2 ? 0.995 : -0.995, 0.0, 0.1);
-  });
+  testing::write_normal_map(dir / "map.exr", 8, 8,
+                            [](uint32_t x, uint32_t) { return Vec3(x % 2 ? 0.995 : -0.995, 0.0, 0.1); });
   for (const json& effect : {json("toksvig"), json{{"name", "sh"}, {"order", 0}}, json{{"name", "sh"}, {"order", 4}},
                              json{{"name", "vmf"}, {"lobes", 1}}, json{{"name", "vmf"}, {"lobes", 2}}}) {
     const Image im = render_with(dir, receding(effect));
