@@ -94,6 +94,37 @@ TEST(FilteredNdfEffects, FinestLevelEqualsPlainNormalMapping) {
   EXPECT_GT(low, 0.03 * mean(plain));
 }
 
+TEST(FilteredNdfEffects, FinestLevelEqualsPlainNormalMapping_EnvironmentLight) {
+  // Distant lighting alone, with bands 1 and 2: the sh shader's rotated irradiance integral and the vmf
+  // shader's per-lobe Eq. (7.23) must give the baseline's irradiance at the finest level.
+  ScratchDir dir("filtered_finest_env");
+  write_smooth_map(dir / "map.exr");
+  Image env;
+  env.width = 32;
+  env.height = 16;
+  env.channels = 3;
+  env.pixels.resize(size_t(32) * 16 * 3);
+  for (uint32_t row = 0; row < 16; ++row)
+    for (uint32_t x = 0; x < 32; ++x) {
+      const double phi = 2 * std::numbers::pi * (x + 0.5) / 32, theta = std::numbers::pi * (row + 0.5) / 16;
+      const double dx = std::sin(theta) * std::cos(phi), dz = std::sin(theta) * std::sin(phi);
+      for (uint32_t c = 0; c < 3; ++c) env.at(x, row, c) = float(0.2 + 1.5 * std::max(0.0, -dx + 0.5 * dz));
+    }
+  save_image(dir / "env.exr", env);
+  const json specular = {{"distribution", "beckmann"}, {"roughness", 0.3}, {"f0", 0.3}};
+  const auto scene = [&](const json& effect) {
+    json j = magnified(effect, specular);
+    j["lights"] = {{{"type", "environment"}, {"path", "env.exr"}}};
+    return j;
+  };
+  const Image plain = render_with(dir, scene("mip"));
+  for (const json& effect :
+       {json{{"name", "sh"}, {"order", 24}, {"precision", "f32"}}, json{{"name", "vmf"}, {"lobes", 2}}}) {
+    const ImageDifference d = compare_images(render_with(dir, scene(effect)), plain);
+    EXPECT_LT(d.rmse, 0.01 * mean(plain)) << effect.dump() << ": rmse " << d.rmse << ", mean " << mean(plain);
+  }
+}
+
 // A plane receding to the horizon under a glossy highlight: footprints from ~4 texels to the whole map.
 json receding(const json& effect) {
   return plane_scene(
