@@ -30,8 +30,9 @@
 
 namespace mbk {
 
-// The highest band of the clamped-cosine expansion in the vMF diffuse term: its truncation error is below 1e-3
-// of the irradiance even for the sharpest (kappa_max) lobes.
+// The highest band of the clamped-cosine expansion in the vMF diffuse term. For the sharpest (kappa_max) lobes the
+// truncated series misses max(t, 0) by at most 0.0095 (of 1 at normal incidence), at the terminator t = 0 where
+// the kink is (0.018 at order 16, 0.012 at 24); broader lobes smooth the kink and converge faster.
 inline constexpr int kVmfDiffuseOrder = 32;
 
 ShaderPtr vmf_effect_shader(const EffectShaderRequest& request);
