@@ -5,12 +5,18 @@
 #include "libbake/eval/colormap_effect.h"
 #include "libbake/eval/crease_effect.h"
 #include "libbake/eval/mip_effect.h"
+#include "libbake/eval/sh_effect.h"
+#include "libbake/eval/toksvig_effect.h"
+#include "libbake/eval/vmf_effect.h"
 
 namespace mbk {
 
 std::span<const EffectShaderEntry> effect_shaders() {
   static const std::vector<EffectShaderEntry> shaders = {
       {"mip", mip_effect_shader},
+      {"toksvig", toksvig_effect_shader},
+      {"sh", sh_effect_shader},
+      {"vmf", vmf_effect_shader},
       {"glints", glints_effect_shader},
       {"colormap", colormap_effect_shader},
       {"colormap-height", colormap_height_effect_shader},

@@ -3,6 +3,8 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 #include <numbers>
 #include <string>
 
@@ -21,12 +23,12 @@ int order_of_count(size_t count) {
   return order;
 }
 
-}  // namespace
-
-std::vector<double> zonal_brdf_coefficients(const std::function<double(double)>& f, int order) {
+// rhat_l of f over the given panels of [-1, 1] (f taken as 0 outside them), n Gauss-Legendre nodes each.
+std::vector<double> zonal_coefficients_on(const std::function<double(double)>& f, int order,
+                                          const std::vector<std::pair<double, double>>& panels, int n) {
   std::vector<double> rhat(size_t(order) + 1, 0.0), zonal(size_t(order) + 1);
-  for (const auto& [a, b] : {std::pair{-1.0, 0.0}, std::pair{0.0, 1.0}}) {
-    const std::vector<QuadratureNode> rule = composite_gauss_legendre(a, b, 1, order + 32);
+  for (const auto& [a, b] : panels) {
+    const std::vector<QuadratureNode> rule = composite_gauss_legendre(a, b, 1, n);
     for (size_t i = 0; i < rule.size(); ++i) {
       const double ft = f(rule[i].x);
       zonal_harmonics(order, rule[i].x, zonal);
@@ -35,6 +37,30 @@ std::vector<double> zonal_brdf_coefficients(const std::function<double(double)>&
   }
   for (int l = 0; l <= order; ++l) rhat[size_t(l)] *= std::sqrt(4 * kPi / (2 * l + 1));  // [Han07] Eq. (7.11)
   return rhat;
+}
+
+}  // namespace
+
+std::vector<double> zonal_brdf_coefficients(const std::function<double(double)>& f, int order) {
+  return zonal_coefficients_on(f, order, {{-1.0, 0.0}, {0.0, 1.0}}, order + 32);
+}
+
+std::vector<double> lambertian_rhat(int order) {
+  return zonal_brdf_coefficients([](double t) { return std::max(t, 0.0); }, order);
+}
+
+std::vector<double> microfacet_rhat(const MicrofacetLobe& lobe, int order) {
+  // Panels [1 - 2^-k, 1 - 2^-(k+1)]: a lobe of width ~alpha^2 / 2 in t spans a few of them, so each panel sees
+  // a smooth, unresolved-free piece; 2^-48 is below any alpha >= 0.001 (width 5e-7).
+  std::vector<std::pair<double, double>> panels;
+  double a = 0.0;
+  for (int k = 1; k <= 48; ++k) {
+    const double b = 1.0 - std::ldexp(1.0, -k);
+    panels.emplace_back(a, b);
+    a = b;
+  }
+  panels.emplace_back(a, 1.0);
+  return zonal_coefficients_on([&](double t) { return microfacet_d(lobe, t); }, order, panels, order / 2 + 24);
 }
 
 double sh_filtered_brdf(const ShBasisEvaluator& basis, std::span<const double> g, std::span<const double> window,

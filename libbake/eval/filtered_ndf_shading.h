@@ -22,6 +22,7 @@
 #include "libbake/core/eigen.h"
 #include "libbake/core/sh_basis.h"
 #include "libbake/core/vmf_lobe.h"
+#include "libbake/eval/microfacet_brdf.h"
 
 namespace mbk {
 
@@ -29,6 +30,12 @@ namespace mbk {
 // separately (so a kink at t = 0, as in max(u, 0), costs no accuracy); exact for polynomials of degree
 // <= 2 (order + 32) - 1 - order on each half.
 std::vector<double> zonal_brdf_coefficients(const std::function<double(double)>& f, int order);
+// rhat_l of the clamped cosine max(t, 0): (pi, 2 pi / 3, pi / 4, 0, -pi / 24, ...).
+std::vector<double> lambertian_rhat(int order);
+// rhat_l of a microfacet distribution D(t) (microfacet_brdf.h; 0 for t <= 0), the zonal lobe the sh and vmf
+// shaders convolve with the NDF. D is normalised as a projected area, so rhat_1 = 2 pi integral D(t) t dt = 1.
+// Sharp lobes (alpha down to 0.01) are integrated on a composite rule graded towards t = 1, where they live.
+std::vector<double> microfacet_rhat(const MicrofacetLobe& lobe, int order);
 
 // [Han07] Eq. (7.12): sum_l window_l rhat_l sum_m g_lm Y_lm(w) for SH NDF coefficients g (order from basis,
 // g.size() >= basis.count()), window and rhat of size >= order + 1.
@@ -55,6 +62,12 @@ double vmf_filtered_beckmann_alpha(double alpha, double kappa);
 double toksvig_variance(double mean_length);
 double toksvig_blinn_phong_exponent(double s, double mean_length);
 double toksvig_beckmann_alpha(double alpha, double mean_length);
+
+// The largest microfacet alpha the filtered-NDF shaders hand to the BRDF. Toksvig's variance and 2 / kappa grow
+// without bound where normals cancel (kappa = 0 is a uniform lobe), and without the cap GGX's D is NaN at
+// alpha = inf (inf / inf) while Beckmann's vanishes; alpha = 1 (a slope deviation of 0.7 per axis) is already a
+// near-flat lobe and the roughest a scene may ask for (test: FilteredNdfEffects.CancellingNormalsStayFinite).
+inline constexpr double kMaxFilteredAlpha = 1.0;
 
 // [Han07] Eqs. (7.23), (7.24): the shading of one vMF lobe (kappa, mu) under distant light given as SH
 // coefficients light_lm (one channel; order from light.size() = (L + 1)^2):

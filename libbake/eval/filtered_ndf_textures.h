@@ -23,6 +23,8 @@ class ShNdfTexture {
   // Error(invalid_input) when the asset is not of kind `sh`.
   static ShNdfTexture from_asset(const Asset& asset);
   int order() const { return basis_.order(); }
+  uint32_t width() const { return width_; }  // of the finest level (the normal map's size)
+  uint32_t height() const { return height_; }
   const std::vector<double>& window() const { return window_; }
   size_t levels() const { return 1 + levels_.size(); }
   // g_lm at (uv, lod) into g (size >= (order + 1)^2). NaN uv or lod give NaN coefficients.
@@ -45,6 +47,8 @@ class VmfTexture {
   static VmfTexture from_asset(const Asset& asset);
   int lobes() const { return lobes_; }
   int feature_count() const { return features_; }
+  uint32_t width() const { return widths_.empty() ? 0 : widths_[0]; }  // of the finest level (the map's size)
+  uint32_t height() const { return heights_.empty() ? 0 : heights_[0]; }
   size_t levels() const { return levels_.size(); }
   // Alg. 7.2 lines 5-10: the J lobes at (uv, lod); features (when non-null) receives J * F values y_j (already
   // divided by the interpolated alpha; 0 for an empty slot). NaN uv or lod give empty lobes.

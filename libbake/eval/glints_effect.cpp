@@ -20,8 +20,7 @@ using DistributionAt = std::function<GlintDistribution(const ShadingContext& c)>
 
 class GlintShader : public MaterialShader {
  public:
-  GlintShader(const Scene& scene, DistributionAt distribution)
-      : points_(scene.lights.points), directionals_(scene.lights.directionals), at_(std::move(distribution)) {}
+  explicit GlintShader(DistributionAt distribution) : at_(std::move(distribution)) {}
 
   Vec3 radiance(const ShadingContext& c, const Brdf& brdf) const override {
     const Vec3& n = c.frame.N;
@@ -30,26 +29,17 @@ class GlintShader : public MaterialShader {
     distant.points.clear();
     distant.directionals.clear();
     Vec3 out = shade(distant, brdf, {c.position, n, n, v});
+    if (!(n.dot(v) > 0.0)) return out;
     const GlintDistribution d = at_(c);
-    const auto direct = [&](const Vec3& l, const Vec3& e) {
-      const double cos_l = n.dot(l);
-      if (!(cos_l > 0.0) || !(n.dot(v) > 0.0)) return;
+    for_each_direct_light(*c.lighting, c.position, n, [&](const Vec3& l, const Vec3& e) {
       const Vec3 spec =
           evaluate_specular(brdf, n, l, v, [&](const Vec3& h) { return d(Vec2(h.dot(c.frame.T), h.dot(c.frame.B))); });
-      out += (brdf.albedo / std::numbers::pi + spec).cwiseProduct(e) * cos_l;
-    };
-    for (const PointLight& light : points_) {
-      const Vec3 to_light = light.position - c.position;
-      const double d2 = to_light.squaredNorm();
-      if (d2 > 0.0) direct(to_light / std::sqrt(d2), light.intensity / d2);
-    }
-    for (const DirectionalLight& light : directionals_) direct(-light.direction, light.irradiance);
+      out += (brdf.albedo / std::numbers::pi + spec).cwiseProduct(e) * n.dot(l);
+    });
     return out;
   }
 
  private:
-  std::vector<PointLight> points_;
-  std::vector<DirectionalLight> directionals_;
   DistributionAt at_;
 };
 
@@ -87,7 +77,7 @@ ShaderPtr glints_effect_shader(const EffectShaderRequest& request) {
       r->lut = bake_standardization_lut(example->map, 65536, Progress::silent()).tables;
     r->point = std::make_unique<GlintPointQuery>(example->map, settings.patch, settings.seed, settings.mode, &r->lut);
     const double sigma_r = settings.sigma_r;
-    return std::make_shared<GlintShader>(request.scene, [r, sigma_r, W, H](const ShadingContext& c) {
+    return std::make_shared<GlintShader>([r, sigma_r, W, H](const ShadingContext& c) {
       const Vec2 u = glint_target_point(c.uv, W, H);
       return GlintDistribution([r, sigma_r, u](const Vec2& s) { return point_ndf(*r->point, u, sigma_r, s); });
     });
@@ -101,7 +91,7 @@ ShaderPtr glints_effect_shader(const EffectShaderRequest& request) {
   f->example = example;
   f->surface =
       GlintSurface::open(example->map, Asset::open(request.assets.at(0)), Asset::open(request.assets.at(1)), settings);
-  return std::make_shared<GlintShader>(request.scene, [f, W, H](const ShadingContext& c) {
+  return std::make_shared<GlintShader>([f, W, H](const ShadingContext& c) {
     const GlintFootprint fp = glint_pixel_footprint(c.uv, c.footprint.duv_dx, c.footprint.duv_dy, W, H);
     if (!std::isfinite(fp.sigma)) return GlintDistribution([](const Vec2&) { return 0.0; });  // grazing
     return GlintDistribution([f, fp](const Vec2& s) { return f->surface->ndf(fp, s, false); });

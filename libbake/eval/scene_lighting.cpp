@@ -1,6 +1,7 @@
 // Direct lighting from point/directional lights and SH distant lighting (see scene_lighting.h).
 #include "libbake/eval/scene_lighting.h"
 
+#include <cmath>
 #include <numbers>
 
 #include "libbake/image/image_io.h"
@@ -25,41 +26,44 @@ SceneLighting load_scene_lighting(const Scene& scene) {
   return out;
 }
 
-namespace {
-
-// One light arriving from unit direction l with irradiance e (on a surface facing it).
-Vec3 direct(const Brdf& brdf, const ShadingPoint& s, const Vec3& l, const Vec3& e) {
-  if (!(s.geometric_normal.dot(l) > 0.0)) return Vec3::Zero();  // below the surface's own horizon
-  const double cos_l = s.normal.dot(l);
-  if (!(cos_l > 0.0)) return Vec3::Zero();
-  return evaluate_brdf(brdf, s.normal, l, s.to_viewer).cwiseProduct(e) * cos_l;
-}
-
-}  // namespace
-
 Vec3 facing_viewer(const Vec3& n, const Vec3& v) {
   constexpr double kMinCosView = 0.01;
   const double c = n.dot(v);
   return c >= kMinCosView ? n : Vec3((n + (kMinCosView - c) * v).normalized());  // n' . v = 0.01 / |n'| > 0
 }
 
-Vec3 shade(const SceneLighting& lighting, const Brdf& brdf, const ShadingPoint& point) {
-  ShadingPoint s = point;
-  s.normal = facing_viewer(point.normal, point.to_viewer);
-  const double cos_v = s.normal.dot(s.to_viewer);
-  Vec3 radiance = Vec3::Zero();
-  for (const auto& light : lighting.points) {
-    const Vec3 to_light = light.position - s.position;
+void for_each_direct_light(const SceneLighting& lighting, const Vec3& position, const Vec3& geometric_normal,
+                           const std::function<void(const Vec3& l, const Vec3& e)>& light) {
+  const auto visit = [&](const Vec3& l, const Vec3& e) {
+    if (geometric_normal.dot(l) > 0.0) light(l, e);  // else below the surface's own horizon
+  };
+  for (const auto& p : lighting.points) {
+    const Vec3 to_light = p.position - position;
     const double d2 = to_light.squaredNorm();
     if (!(d2 > 0.0)) continue;  // a light exactly on the surface has no direction
-    radiance += direct(brdf, s, to_light / std::sqrt(d2), light.intensity / d2);
+    visit(to_light / std::sqrt(d2), p.intensity / d2);
   }
-  for (const auto& light : lighting.directionals) radiance += direct(brdf, s, -light.direction, light.irradiance);
+  for (const auto& d : lighting.directionals) visit(-d.direction, d.irradiance);
+}
+
+Vec3 distant_specular(const SceneLighting& lighting, const Vec3& f0, const Vec3& n, const Vec3& v, double alpha) {
+  if (!lighting.has_distant) return Vec3::Zero();
+  const double cos_v = n.dot(v);
+  const Vec3 mirror = 2.0 * cos_v * n - v;
+  return schlick_fresnel(f0, cos_v).cwiseProduct(
+      sh_lobe_radiance(lighting.distant, mirror, specular_lobe_kappa(alpha)));
+}
+
+Vec3 shade(const SceneLighting& lighting, const Brdf& brdf, const ShadingPoint& point) {
+  const Vec3 n = facing_viewer(point.normal, point.to_viewer);
+  Vec3 radiance = Vec3::Zero();
+  for_each_direct_light(lighting, point.position, point.geometric_normal, [&](const Vec3& l, const Vec3& e) {
+    const double cos_l = n.dot(l);
+    if (cos_l > 0.0) radiance += evaluate_brdf(brdf, n, l, point.to_viewer).cwiseProduct(e) * cos_l;
+  });
   if (lighting.has_distant) {
-    radiance += brdf.albedo.cwiseProduct(sh_irradiance(lighting.distant, s.normal)) / std::numbers::pi;
-    const Vec3 mirror = 2.0 * cos_v * s.normal - s.to_viewer;
-    radiance += schlick_fresnel(brdf.f0, cos_v)
-                    .cwiseProduct(sh_lobe_radiance(lighting.distant, mirror, specular_lobe_kappa(brdf.lobe.alpha)));
+    radiance += brdf.albedo.cwiseProduct(sh_irradiance(lighting.distant, n)) / std::numbers::pi;
+    radiance += distant_specular(lighting, brdf.f0, n, point.to_viewer, brdf.lobe.alpha);
   }
   return radiance;
 }

@@ -59,6 +59,8 @@ std::string known_effect_names();
 
 // The normal map of a material as a bake input (for effects that bake from it).
 BakeInput normal_map_input(const Material& material);
+// The `mip` asset of a material's normal map (effect_mip.cpp; used by the `mip` and `toksvig` effects).
+AssetRecipe mip_asset_recipe(const Material& material);
 
 // A required file option `key` of an effect: its path as written (returned, for the canonical options) and,
 // resolved against the scene folder, in use.files[key]. Error(invalid_input) at the option's JSON path when
@@ -69,6 +71,9 @@ std::string effect_file_option(JsonObjectReader& r, const std::string& key, cons
 // The effects, one file each.
 EffectInfo mip_effect();
 EffectInfo glints_effect();
+EffectInfo sh_effect();
+EffectInfo vmf_effect();
+EffectInfo toksvig_effect();
 EffectInfo colormap_effect();         // effect_colormap.cpp
 EffectInfo colormap_height_effect();  // effect_colormap.cpp
 EffectInfo colormap_slope_effect();   // effect_colormap.cpp

@@ -1,0 +1,41 @@
+// The Toksvig shader (see toksvig_effect.h).
+#include "libbake/eval/toksvig_effect.h"
+
+#include <algorithm>
+
+#include "libbake/eval/filtered_ndf_shading.h"
+#include "libbake/eval/mip_effect.h"
+
+namespace mbk {
+namespace {
+
+class ToksvigShader : public MaterialShader {
+ public:
+  explicit ToksvigShader(std::shared_ptr<const NormalPyramid> pyramid) : pyramid_(std::move(pyramid)) {}
+
+  Vec3 radiance(const ShadingContext& c, const Brdf& brdf) const override {
+    const NormalMap& finest = pyramid_->levels[0];
+    const Vec3 m = sample_pyramid(*pyramid_, c.uv, mip_lod(c.footprint, finest.width, finest.height));
+    const double len = m.norm();
+    // As material_normals.cpp: a mean shorter than 1e-6 has lost its direction (and its lobe is flat).
+    const Vec3 n = len > 1e-6 ? Vec3(m / len) : Vec3::UnitZ();
+    Brdf widened = brdf;
+    widened.lobe.alpha =
+        std::max(brdf.lobe.alpha, std::min(kMaxFilteredAlpha, toksvig_beckmann_alpha(brdf.lobe.alpha, len)));
+    return shade(*c.lighting, widened, {c.position, c.frame.N, c.frame.to_world(n).normalized(), c.to_viewer});
+  }
+
+ private:
+  std::shared_ptr<const NormalPyramid> pyramid_;
+};
+
+}  // namespace
+
+ShaderPtr toksvig_effect_shader(const EffectShaderRequest& request) {
+  if (request.mode == EvalMode::reference) return request.base;
+  const std::filesystem::path& file = request.assets.at(0);
+  return std::make_shared<ToksvigShader>(
+      request.cache.get<NormalPyramid>("mip asset|" + file.string(), [&] { return load_mip_asset(file); }));
+}
+
+}  // namespace mbk

@@ -1,0 +1,76 @@
+// The vMF-mixture shader (see vmf_effect.h).
+#include "libbake/eval/vmf_effect.h"
+
+#include <algorithm>
+#include <array>
+#include <numbers>
+
+#include "formats/asset.h"
+#include "libbake/eval/filtered_ndf_shading.h"
+#include "libbake/eval/filtered_ndf_textures.h"
+
+namespace mbk {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+class VmfShader : public MaterialShader {
+ public:
+  explicit VmfShader(std::shared_ptr<const VmfTexture> texture)
+      : texture_(std::move(texture)), rhat_diffuse_(lambertian_rhat(kVmfDiffuseOrder)) {}
+
+  Vec3 radiance(const ShadingContext& c, const Brdf& brdf) const override {
+    const SurfaceFrame& f = c.frame;
+    const Vec3& v = c.to_viewer;
+    // The lobes in world space, each with its widened roughness (Eq. 7.21).
+    std::vector<VmfLobeShape> lobes;
+    std::vector<Brdf> widened;
+    for (VmfLobeShape lobe : texture_->lookup(c.uv, mip_lod(c.footprint, texture_->width(), texture_->height()))) {
+      if (!(lobe.alpha > 0.0)) continue;
+      lobe.mu = facing_viewer(f.to_world(lobe.mu).normalized(), v);
+      Brdf b = brdf;
+      b.lobe.alpha = std::max(brdf.lobe.alpha,
+                              std::min(kMaxFilteredAlpha, vmf_filtered_beckmann_alpha(brdf.lobe.alpha, lobe.kappa)));
+      lobes.push_back(lobe);
+      widened.push_back(b);
+    }
+
+    Vec3 out = Vec3::Zero();
+    for_each_direct_light(*c.lighting, c.position, f.N, [&](const Vec3& l, const Vec3& e) {
+      const double diffuse = std::max(0.0, vmf_filtered_brdf(lobes, rhat_diffuse_, l));  // Eq. (7.14)
+      Vec3 specular = Vec3::Zero();
+      for (size_t j = 0; j < lobes.size(); ++j)
+        specular += lobes[j].alpha * evaluate_specular(widened[j], lobes[j].mu, l, v) * lobes[j].mu.dot(l);
+      out += (brdf.albedo * (diffuse / kPi) + specular).cwiseProduct(e);
+    });
+    if (c.lighting->has_distant) {
+      std::array<std::array<double, kShCount>, 3> light{};  // per channel
+      for (int k = 0; k < kShCount; ++k)
+        for (int ch = 0; ch < 3; ++ch) light[size_t(ch)][size_t(k)] = c.lighting->distant[size_t(k)][ch];
+      for (size_t j = 0; j < lobes.size(); ++j) {
+        Vec3 irradiance;
+        for (int ch = 0; ch < 3; ++ch)  // Eq. (7.23)
+          irradiance[ch] =
+              std::max(0.0, vmf_sh_lighting(light[size_t(ch)], rhat_diffuse_, lobes[j].kappa, lobes[j].mu));
+        out += lobes[j].alpha * (brdf.albedo.cwiseProduct(irradiance) / kPi +
+                                 distant_specular(*c.lighting, brdf.f0, lobes[j].mu, v, widened[j].lobe.alpha));
+      }
+    }
+    return out;
+  }
+
+ private:
+  std::shared_ptr<const VmfTexture> texture_;
+  std::vector<double> rhat_diffuse_;
+};
+
+}  // namespace
+
+ShaderPtr vmf_effect_shader(const EffectShaderRequest& request) {
+  if (request.mode == EvalMode::reference) return request.base;
+  const std::filesystem::path& file = request.assets.at(0);
+  return std::make_shared<VmfShader>(request.cache.get<VmfTexture>(
+      "vmf asset|" + file.string(), [&] { return VmfTexture::from_asset(Asset::open(file)); }));
+}
+
+}  // namespace mbk

@@ -1,0 +1,186 @@
+// The filtered-NDF effects at render time (libbake/eval/sh_effect.h, vmf_effect.h, toksvig_effect.h; [Han07]):
+// - at the finest level (a magnified plane) sh and vmf shade like plain normal mapping (the `mip` effect);
+// - on a plane receding to the horizon they are closer to the brute-force reference than plain mip, because
+//   the NDF under a large footprint is wide and mip's renormalised mean normal forgets it;
+// - where normals cancel (a V-groove seen from afar) every effect stays finite (the kMaxFilteredAlpha cap);
+// - reference mode reads no assets (the shaders return the raw-map baseline).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "libbake/eval/filtered_ndf_shading.h"
+#include "libbake/eval/image_difference.h"
+#include "libbake/eval/renderer.h"
+#include "libbake/scene/bake_plan.h"
+#include "tests/scene/scene_test_fixtures.h"
+
+namespace mbk {
+namespace {
+
+using nlohmann::json;
+using testing::ScratchDir;
+
+// One plane (material "m" with the given effect) seen by a camera; a point light, a directional light, a sky.
+json plane_scene(const json& effect, const json& specular, const json& camera, const json& plane,
+                 const json& point_light) {
+  json material = {{"albedo", {0.3, 0.3, 0.3}}, {"specular", specular}, {"normal_map", {{"path", "map.exr"}}}};
+  material["effects"] = json::array();
+  if (!effect.is_null()) material["effects"].push_back(effect);
+  json p = plane;
+  p["type"] = "plane";
+  p["material"] = "m";
+  return {{"camera", camera},
+          {"shapes", {p}},
+          {"materials", {{"m", material}}},
+          {"lights",
+           {point_light,
+            {{"type", "directional"}, {"direction", {0.2, -1.0, 0.4}}, {"irradiance", {0.4, 0.4, 0.4}}},
+            {{"type", "sky"}, {"radiance", {0.05, 0.06, 0.08}}}}}};
+}
+
+Image render_with(const ScratchDir& dir, const json& scene_json, uint32_t reference = 0) {
+  testing::write_json(dir / "s.json", scene_json);
+  const Scene scene = load_scene(dir / "s.json");
+  if (reference == 0) {
+    std::filesystem::create_directories(default_asset_folder(scene));
+    for (const PlannedAsset& a : plan_assets(scene))
+      a.recipe.bake(Progress::silent()).write(default_asset_folder(scene) / a.file_name);
+  }
+  RenderSettings settings;
+  settings.reference = reference;
+  return render_scene(scene, load_render_inputs(scene, settings), settings, Progress::silent());
+}
+
+double mean(const Image& im) {
+  double s = 0.0;
+  for (const float v : im.pixels) s += v;
+  return s / double(im.pixels.size());
+}
+
+// A camera close above a 2 x 2 plane carrying one 32 x 32 tile: ~5 pixels per texel (LOD 0 everywhere).
+json magnified(const json& effect, const json& specular) {
+  return plane_scene(
+      effect, specular,
+      {{"position", {0.0, 0.6, 0.6}}, {"look_at", {0.0, 0.0, 0.0}}, {"fov_y", 40}, {"width", 48}, {"height", 36}},
+      {{"size", {2.0, 2.0}}, {"uv_scale", {1.0, 1.0}}},
+      {{"type", "point"}, {"position", {0.3, 1.0, -0.4}}, {"intensity", {2.0, 2.0, 2.0}}});
+}
+
+// Gentle bumps, one period per tile: neighbouring normals differ by a few degrees.
+void write_smooth_map(const std::filesystem::path& path) {
+  testing::write_normal_map(path, 32, 32, [](uint32_t x, uint32_t row) {
+    const double u = 2 * std::numbers::pi * (x + 0.5) / 32, v = 2 * std::numbers::pi * (row + 0.5) / 32;
+    return Vec3(0.3 * std::cos(u), 0.25 * std::sin(v), 1.0);
+  });
+}
+
+TEST(FilteredNdfEffects, FinestLevelEqualsPlainNormalMapping) {
+  ScratchDir dir("filtered_finest");
+  write_smooth_map(dir / "map.exr");
+  const json specular = {{"distribution", "beckmann"}, {"roughness", 0.3}, {"f0", 0.3}};
+  const Image plain = render_with(dir, magnified("mip", specular));
+  for (const json& effect :
+       {json{{"name", "sh"}, {"order", 24}, {"precision", "f32"}}, json{{"name", "vmf"}, {"lobes", 2}}}) {
+    const Image filtered = render_with(dir, magnified(effect, specular));
+    const ImageDifference d = compare_images(filtered, plain);
+    EXPECT_LT(d.rmse, 0.01 * mean(plain)) << effect.dump() << ": rmse " << d.rmse << ", mean " << mean(plain);
+  }
+  // Not a tautology: Toksvig (which widens by the bilinear mean's length) and a truncated low order both differ.
+  const double low = compare_images(render_with(dir, magnified({{"name", "sh"}, {"order", 2}}, specular)), plain).rmse;
+  EXPECT_GT(low, 0.03 * mean(plain));
+}
+
+TEST(FilteredNdfEffects, FinestLevelEqualsPlainNormalMapping_EnvironmentLight) {
+  // Distant lighting alone, with bands 1 and 2: the sh shader's rotated irradiance integral and the vmf
+  // shader's per-lobe Eq. (7.23) must give the baseline's irradiance at the finest level.
+  ScratchDir dir("filtered_finest_env");
+  write_smooth_map(dir / "map.exr");
+  Image env;
+  env.width = 32;
+  env.height = 16;
+  env.channels = 3;
+  env.pixels.resize(size_t(32) * 16 * 3);
+  for (uint32_t row = 0; row < 16; ++row)
+    for (uint32_t x = 0; x < 32; ++x) {
+      const double phi = 2 * std::numbers::pi * (x + 0.5) / 32, theta = std::numbers::pi * (row + 0.5) / 16;
+      const double dx = std::sin(theta) * std::cos(phi), dz = std::sin(theta) * std::sin(phi);
+      for (uint32_t c = 0; c < 3; ++c) env.at(x, row, c) = float(0.2 + 1.5 * std::max(0.0, -dx + 0.5 * dz));
+    }
+  save_image(dir / "env.exr", env);
+  const json specular = {{"distribution", "beckmann"}, {"roughness", 0.3}, {"f0", 0.3}};
+  const auto scene = [&](const json& effect) {
+    json j = magnified(effect, specular);
+    j["lights"] = {{{"type", "environment"}, {"path", "env.exr"}}};
+    return j;
+  };
+  const Image plain = render_with(dir, scene("mip"));
+  for (const json& effect :
+       {json{{"name", "sh"}, {"order", 24}, {"precision", "f32"}}, json{{"name", "vmf"}, {"lobes", 2}}}) {
+    const ImageDifference d = compare_images(render_with(dir, scene(effect)), plain);
+    EXPECT_LT(d.rmse, 0.01 * mean(plain)) << effect.dump() << ": rmse " << d.rmse << ", mean " << mean(plain);
+  }
+}
+
+// A plane receding to the horizon under a glossy highlight: footprints from ~4 texels to the whole map.
+json receding(const json& effect) {
+  return plane_scene(
+      effect, {{"distribution", "ggx"}, {"roughness", 0.25}, {"f0", 0.5}},
+      {{"position", {0.0, 0.4, 0.0}}, {"look_at", {0.0, 0.3, -8.0}}, {"fov_y", 20}, {"width", 48}, {"height", 32}},
+      {{"center", {0.0, 0.0, -50.0}}, {"size", {100.0, 100.0}}, {"uv_scale", {100.0, 100.0}}},
+      {{"type", "point"}, {"position", {0.0, 2.0, -25.0}}, {"intensity", {300.0, 300.0, 300.0}}});
+}
+
+TEST(FilteredNdfEffects, RecedingPlaneIsCloserToTheReferenceThanPlainMip) {
+  ScratchDir dir("filtered_receding");
+  testing::write_bumpy_map(dir / "map.exr", 32, 32);
+  const Image reference = render_with(dir, receding("mip"), 12);
+  const auto error = [&](const json& effect) {
+    return compare_images(render_with(dir, receding(effect)), reference).rmse;
+  };
+  const double mip = error("mip"), toksvig = error("toksvig");
+  const double sh = error({{"name", "sh"}, {"order", 16}}), vmf = error({{"name", "vmf"}, {"lobes", 4}});
+  std::cout << "rmse vs reference: mip " << mip << ", toksvig " << toksvig << ", sh16 " << sh << ", vmf4 " << vmf
+            << " (mean " << mean(reference) << ")\n";
+  EXPECT_LT(sh, 0.8 * mip);
+  EXPECT_LT(vmf, 0.8 * mip);
+  EXPECT_LT(toksvig, mip);
+}
+
+TEST(FilteredNdfEffects, CancellingNormalsStayFinite) {
+  ScratchDir dir("filtered_vgroove");
+  // A V-groove: alternate columns lean +x and -x almost to the horizon; two columns average to |n| ~ 0.1.
+  testing::write_normal_map(dir / "map.exr", 8, 8,
+                            [](uint32_t x, uint32_t) { return Vec3(x % 2 ? 0.995 : -0.995, 0.0, 0.1); });
+  for (const json& effect : {json("toksvig"), json{{"name", "sh"}, {"order", 0}}, json{{"name", "sh"}, {"order", 4}},
+                             json{{"name", "vmf"}, {"lobes", 1}}, json{{"name", "vmf"}, {"lobes", 2}}}) {
+    const Image im = render_with(dir, receding(effect));
+    for (const float v : im.pixels) ASSERT_TRUE(std::isfinite(v) && v >= 0.0f) << effect.dump();
+  }
+}
+
+TEST(FilteredNdfEffects, ReferenceReadsNoAssetsAndIsTheRawMap) {
+  ScratchDir dir("filtered_reference");
+  write_smooth_map(dir / "map.exr");
+  const json specular = {{"roughness", 0.3}};
+  const Image plain = render_with(dir, magnified(nullptr, specular), 2);
+  for (const json& effect : {json("sh"), json("vmf"), json("toksvig")}) {
+    const Image im = render_with(dir, magnified(effect, specular), 2);  // no bake: assets are never read
+    EXPECT_EQ(im.pixels, plain.pixels) << effect.dump();
+  }
+}
+
+TEST(FilteredNdfShading, MicrofacetRhatIsNormalised) {
+  // rhat_1 = 2 pi integral D(t) t dt = 1 for a projected-area-normalised D, even for sharp lobes.
+  for (const Distribution d : {Distribution::beckmann, Distribution::ggx})
+    for (const double alpha : {0.01, 0.05, 0.2, 0.6, 1.0}) {
+      const std::vector<double> rhat = microfacet_rhat({d, alpha}, 4);
+      EXPECT_NEAR(rhat[1], 1.0, 1e-6) << "alpha " << alpha;
+    }
+}
+
+}  // namespace
+}  // namespace mbk
