@@ -4,8 +4,8 @@
 namespace mbk {
 
 std::span<const AssetKind> asset_kinds() {
-  static const std::vector<AssetKind> kKinds = {mip_kind(), lut_kind(),    rmq_kind(),      sh_kind(),
-                                                vmf_kind(), crease_kind(), colormap_kind(), moments_kind()};
+  static const std::vector<AssetKind> kKinds = {mip_kind(),    lut_kind(),      rmq_kind(),     sh_kind(),   vmf_kind(),
+                                                crease_kind(), colormap_kind(), moments_kind(), graph_kind()};
   return kKinds;
 }
 

@@ -49,5 +49,6 @@ AssetKind vmf_kind();
 AssetKind colormap_kind();
 AssetKind moments_kind();
 AssetKind crease_kind();
+AssetKind graph_kind();
 
 }  // namespace mbk

@@ -109,6 +109,11 @@ std::span<const MessageInfo> all_messages() {
       crease_gradient_not_unit,
       crease_bad_side,
       crease_bad_normal,
+      graph_bad_parameters,
+      graph_section_shape,
+      graph_non_finite,
+      graph_bad_candidate,
+      graph_bad_transfer,
   };
   return kAll;
 }

@@ -187,6 +187,16 @@ inline constexpr MessageInfo crease_gradient_not_unit{16007, Severity::error, "c
 inline constexpr MessageInfo crease_bad_side{16008, Severity::error, "crease: side is neither +1 nor -1"};
 inline constexpr MessageInfo crease_bad_normal{16009, Severity::error,
                                                "crease: normal is not a unit vector in the upper hemisphere"};
+// 19xxx: kind 9, `graph` (exemplar-graph analysis for multiscale synthesis)
+inline constexpr MessageInfo graph_bad_parameters{19001, Severity::error,
+                                                  "graph: parameters or graph metadata missing or inconsistent"};
+inline constexpr MessageInfo graph_section_shape{19002, Severity::error,
+                                                 "graph: section type or shape does not match the parameters"};
+inline constexpr MessageInfo graph_non_finite{19003, Severity::error, "graph: non-finite stack or transfer value"};
+inline constexpr MessageInfo graph_bad_candidate{
+    19004, Severity::error, "graph: candidate out of range or not in the admissible levels of its stack level"};
+inline constexpr MessageInfo graph_bad_transfer{
+    19005, Severity::error, "graph: transfer offset not zero within one exemplar or where there is no candidate"};
 }  // namespace msg
 
 // All of the above, for documentation and the uniqueness test.

@@ -21,12 +21,9 @@
 
 #include <nlohmann/json.hpp>
 
-namespace mbk {
+#include "formats/admissible_levels.h"
 
-struct GraphEdge {
-  uint32_t source = 0, destination = 0;  // exemplar indices
-  uint32_t r = 0;                        // the source texel is 2^r destination texels wide
-};
+namespace mbk {
 
 struct ExemplarGraph {
   struct Exemplar {

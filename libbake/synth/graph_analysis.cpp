@@ -10,7 +10,7 @@
 namespace mbk {
 namespace {
 
-constexpr uint32_t kNearestConsidered = 16;  // neighbours among which the dispersed candidates are chosen
+constexpr uint32_t kNearestConsidered = 64;  // neighbours among which the dispersed candidates are chosen
 
 uint32_t torus_distance(uint32_t a, uint32_t b, uint32_t m) {
   const uint32_t d = a > b ? a - b : b - a;
@@ -39,7 +39,7 @@ GraphAnalysis analyse_graph(const ExemplarGraph& graph, const std::vector<Image>
   const size_t texels = size_t(m) * m;
   for (const Image& e : exemplars) a.stacks.push_back(build_gaussian_stack(e));
   a.levels = a.stacks[0].levels;
-  a.admissible = admissible_levels(graph, a.levels);
+  a.admissible = admissible_levels(uint32_t(graph.exemplars.size()), graph.edges, a.levels);
   const uint32_t E = uint32_t(exemplars.size());
   a.candidates.assign(size_t(E) * a.levels * texels * a.K, SynthCandidate{});
   a.transfer.assign(a.candidates.size() * ch, 0.0f);
@@ -78,19 +78,35 @@ GraphAnalysis analyse_graph(const ExemplarGraph& graph, const std::vector<Image>
       const uint32_t found = uint32_t(nearest.size() / texels);
       parallel_for(0, int64_t(texels), [&](int64_t t) {
         const size_t base = a.candidate_index(i, k, 0, 0) + size_t(t) * a.K;
-        uint32_t chosen = 0;
-        for (uint32_t n = 0; n < found && chosen < a.K; ++n) {
-          const uint32_t p = nearest[size_t(t) * found + n];
+        // Candidate 0 is the nearest; each later one the nearest that is dispersed from the earlier ones, or,
+        // when none of the considered neighbours is (a smooth coarse level, where the nearest neighbourhoods all
+        // lie around the texel), the considered one farthest from them.
+        const auto spread_from_chosen = [&](uint32_t chosen, const StackLevel& l, uint32_t x, uint32_t y) {
+          uint32_t nearest_chosen = UINT32_MAX;
+          for (uint32_t c = 0; c < chosen; ++c) {
+            const SynthCandidate& q = a.candidates[base + c];
+            if (q.exemplar == l.exemplar && q.level == l.level)
+              nearest_chosen = std::min(nearest_chosen, std::max(torus_distance(q.x, x, m), torus_distance(q.y, y, m)));
+          }
+          return nearest_chosen;
+        };
+        for (uint32_t chosen = 0; chosen < std::min(a.K, found); ++chosen) {
+          uint32_t pick = found, fallback = found, fallback_spread = 0;
+          for (uint32_t n = 0; n < found && pick == found; ++n) {
+            const uint32_t p = nearest[size_t(t) * found + n];
+            const StackLevel& l = pool_levels[p / texels];
+            const uint32_t x = (p % texels) % m, y = uint32_t((p % texels) / m);
+            const uint32_t spread = spread_from_chosen(chosen, l, x, y);
+            if (spread >= std::max(2u, std::min(a.stacks[l.exemplar].spacing(l.level), m / 4)))
+              pick = n;
+            else if (spread > fallback_spread)
+              fallback = n, fallback_spread = spread;
+          }
+          if (pick == found) pick = fallback;
+          if (pick == found) break;  // every considered texel is already a candidate
+          const uint32_t p = nearest[size_t(t) * found + pick];
           const StackLevel& l = pool_levels[p / texels];
           const uint32_t x = (p % texels) % m, y = uint32_t((p % texels) / m);
-          const uint32_t spread = std::max(2u, std::min(a.stacks[l.exemplar].spacing(l.level), m / 4));
-          bool dispersed = true;
-          for (uint32_t c = 0; c < chosen && dispersed; ++c) {
-            const SynthCandidate& q = a.candidates[base + c];
-            dispersed = !(q.exemplar == l.exemplar && q.level == l.level &&
-                          std::max(torus_distance(q.x, x, m), torus_distance(q.y, y, m)) < spread);
-          }
-          if (!dispersed) continue;
           a.candidates[base + chosen] = {l.exemplar, l.level, x, y};
           if (l.exemplar != i) {  // Sec. 5.3: b = mean(source - destination) over the neighbourhood
             const float* s = &source[size_t(t) * dims];
@@ -102,7 +118,6 @@ GraphAnalysis analyse_graph(const ExemplarGraph& graph, const std::vector<Image>
               a.transfer[(base + chosen) * ch + c] = float(sum / (kSynthNeighbourhood * kSynthNeighbourhood));
             }
           }
-          ++chosen;
         }
       });
       progress.advance();

@@ -6,26 +6,29 @@
 //     texels E^j_l[v] over the admissible levels whose 5 x 5 neighbourhoods, sampled at the levels' own spacings
 //     h_k and h_l (toroidally), best match its own. Matched in PCA space (neighbourhood_pca.h; one PCA per source
 //     level, fitted on its admissible levels' neighbourhoods) by exact FLANN search (neighbourhood_search.h);
-//     spatially dispersed (after Zelinka & Garland 2002): candidate c > 0 is the best of the 16 nearest that lies
-//     at least max(2, min(h_l, m / 4)) texels (toroidal, per axis max) from every earlier candidate of its level;
+//     spatially dispersed (after Zelinka & Garland 2002): among the 64 nearest, candidate c > 0 is the best one
+//     lying at least max(2, min(h_l, m / 4)) texels (toroidal, per axis max) from every earlier candidate of its
+//     level, or, when none does (a smooth coarse level, whose nearest neighbourhoods all lie around the texel), the
+//     one farthest from them;
 //   - constant-offset transfer functions (Sec. 5.3): per candidate, b = mean over the 25 samples of (source -
 //     destination), so that destination + b best matches the source in L2; exactly 0 within one exemplar.
 // A level with no admissible level (the finest level of an exemplar without an outgoing edge of r >= 1) has no
-// candidates: kNoCandidate.
+// candidates: kNoCandidate; so do slots beyond the number of distinct texels its admissible levels hold.
 #pragma once
 
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 #include "libbake/core/progress.h"
-#include "libbake/synth/admissible_levels.h"
+#include "formats/admissible_levels.h"
+#include "formats/graph_layout.h"
+#include "libbake/synth/exemplar_graph.h"
 #include "libbake/synth/gaussian_stack.h"
 
 namespace mbk {
 
-inline constexpr uint32_t kNoCandidate = std::numeric_limits<uint32_t>::max();
-inline constexpr uint32_t kSynthNeighbourhood = 5;  // 5 x 5 (Eq. 5.1)
+inline constexpr uint32_t kNoCandidate = kGraphNoCandidate;  // formats/graph_layout.h
+inline constexpr uint32_t kSynthNeighbourhood = 5;           // 5 x 5 (Eq. 5.1)
 
 struct SynthCandidate {
   uint32_t exemplar = kNoCandidate, level = 0, x = 0, y = 0;

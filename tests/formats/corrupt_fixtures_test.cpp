@@ -14,6 +14,7 @@
 #include "tests/formats/asset_fixtures.h"
 #include "tests/formats/colormap_fixtures.h"
 #include "tests/formats/crease_fixtures.h"
+#include "tests/formats/graph_fixtures.h"
 #include "tests/formats/lut_fixtures.h"
 #include "tests/formats/moments_fixtures.h"
 #include "tests/formats/rmq_fixtures.h"
@@ -365,6 +366,16 @@ std::vector<CorruptCase> corrupt_cases() {
       {"MomentsNegativeVariance", 18005, [] { return test::moments_with_element(1, 1, [](float) { return 0.0f; }); }},
       {"MomentsParentNotMean", 18006,
        [] { return test::moments_with_element(1, 1, [](float m2) { return m2 + 0.01f; }); }},
+      {"GraphSideNotAPowerOfTwo", 19001,
+       [] { return test::graph_bytes([](test::GraphParts& p) { p.metadata["parameters"]["side"] = 6; }); }},
+      {"GraphShapeDisagreesWithCandidates", 19002,
+       [] { return test::graph_bytes([](test::GraphParts& p) { p.metadata["parameters"]["candidates"] = 2; }); }},
+      {"GraphNonFiniteStack", 19003,
+       [] { return test::graph_bytes([](test::GraphParts& p) { p.stacks[5] = std::nanf(""); }); }},
+      {"GraphCandidateAtTheFinestLevel", 19004,
+       [] { return test::graph_bytes([](test::GraphParts& p) { p.candidates[1] = 2; }); }},  // texel 0: (0, 2)
+      {"GraphTransferWithinOneExemplar", 19005,
+       [] { return test::graph_bytes([](test::GraphParts& p) { p.transfer[0] = 0.5f; }); }},  // (0, 0) -> E0_0
       {"CreaseZeroWidth", 16001,
        [] {
          return test::crease_bytes({}, {{"width", 0}, {"height", 2}});

@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include "formats/error.h"
-#include "libbake/synth/admissible_levels.h"
 #include "libbake/synth/exemplar_graph.h"
 
 namespace mbk {
@@ -41,7 +40,7 @@ TEST(ExemplarGraph, ParsesTheThesisExample) {
 // the finest levels of each stack (E0_7) are not admissible ... E2_5 in A(E2_6)".
 TEST(AdmissibleLevels, MatchTheThesisExample) {
   const ExemplarGraph g = parse_exemplar_graph(thesis_graph(), "g.json", "/graphs");
-  const auto a = admissible_levels(g, 8);
+  const auto a = admissible_levels(uint32_t(g.exemplars.size()), g.edges, 8);
   EXPECT_EQ(a[0][5], (std::vector<StackLevel>{{0, 5}, {1, 3}, {2, 2}}));
   EXPECT_EQ(a[2][6], (std::vector<StackLevel>{{2, 5}, {2, 6}}));
   // The finest level of E0 only sees finer exemplars; E1 (no outgoing edge) sees only itself, never its level 7.

@@ -1,0 +1,85 @@
+// Asset kind 9, `graph`: the analysis of an exemplar graph for multiscale synthesis ([Han08] thesis Secs.
+// 5.2.1-5.3; formats/graph_layout.h). formats/SPEC.md, "Kind 9: graph".
+//
+// Invariants `validate` checks, in this order (the first finding ends the check): parameters and graph metadata
+// (19001), section types and shapes (19002), finite stacks and transfers (19003), every candidate either none (all
+// four words 0xFFFFFFFF) or in range with its (exemplar, level) admissible for its stack level, recomputed from the
+// recorded edges (19004), transfer offsets exactly 0 within one exemplar and where there is no candidate (19005).
+#include <algorithm>
+#include <cmath>
+
+#include "formats/asset.h"
+#include "formats/asset_kind.h"
+#include "formats/graph_layout.h"
+
+namespace mbk {
+namespace {
+
+void check_graph(const Asset& a, std::vector<Finding>& out) {
+  GraphLayout g;
+  if (std::string problem = parse_graph_layout(a, g); !problem.empty()) {
+    out.push_back(make_finding(msg::graph_bad_parameters, problem, {{"key", "parameters"}}));
+    return;
+  }
+  if (std::string problem = check_graph_section_shapes(a, g); !problem.empty()) {
+    out.push_back(make_finding(msg::graph_section_shape, problem));
+    return;
+  }
+  const std::vector<float> stacks = a.read<float>(kGraphStacksSection), transfer = a.read<float>(kGraphTransferSection);
+  for (const auto& [name, values] :
+       {std::pair{kGraphStacksSection, &stacks}, std::pair{kGraphTransferSection, &transfer}})
+    for (size_t i = 0; i < values->size(); ++i)
+      if (!std::isfinite((*values)[i])) {
+        out.push_back(make_finding(msg::graph_non_finite, "'" + std::string(name) + "' element " + std::to_string(i),
+                                   {{"section", name}, {"index", i}}));
+        return;
+      }
+  const std::vector<uint32_t> candidates = a.read<uint32_t>(kGraphCandidatesSection);
+  const auto admissible = admissible_levels(g.exemplars, g.edges, g.levels);
+  const size_t texels = size_t(g.side) * g.side;
+  for (size_t slot = 0; slot < candidates.size() / 4; ++slot) {
+    const size_t texel = slot / g.candidates;
+    const uint32_t i = uint32_t(texel / (texels * g.levels)), k = uint32_t(texel / texels % g.levels);
+    const uint32_t* c = &candidates[slot * 4];
+    const bool none = std::all_of(c, c + 4, [](uint32_t v) { return v == kGraphNoCandidate; });
+    const auto& allowed = admissible[i][k];
+    if (!none && (c[2] >= g.side || c[3] >= g.side ||
+                  std::find(allowed.begin(), allowed.end(), StackLevel{c[0], c[1]}) == allowed.end())) {
+      out.push_back(make_finding(
+          msg::graph_bad_candidate,
+          "candidate " + std::to_string(slot % g.candidates) + " of exemplar " + std::to_string(i) + " level " +
+              std::to_string(k) + " texel " + std::to_string(texel % texels) + " is (" + std::to_string(c[0]) + ", " +
+              std::to_string(c[1]) + ", " + std::to_string(c[2]) + ", " + std::to_string(c[3]) + ")",
+          {{"slot", slot}}));
+      return;
+    }
+    if (none || c[0] == i)
+      for (uint32_t ch = 0; ch < g.channels; ++ch)
+        if (transfer[slot * g.channels + ch] != 0.0f) {
+          out.push_back(make_finding(msg::graph_bad_transfer,
+                                     "candidate slot " + std::to_string(slot) + " channel " + std::to_string(ch) +
+                                         " has offset " + std::to_string(transfer[slot * g.channels + ch]),
+                                     {{"slot", slot}}));
+          return;
+        }
+  }
+}
+
+}  // namespace
+
+AssetKind graph_kind() {
+  AssetKind k;
+  k.id = kGraphKindId;
+  k.name = "graph";
+  k.summary = "exemplar-graph analysis: Gaussian stacks, k-coherence candidate sets and transfer functions";
+  k.required_sections = {{kGraphStacksSection, {ElementType::f32}, 5},
+                         {kGraphCandidatesSection, {ElementType::u32}, 6},
+                         {kGraphTransferSection, {ElementType::f32}, 6}};
+  k.knows_section = [](const std::string& name) {
+    return name == kGraphStacksSection || name == kGraphCandidatesSection || name == kGraphTransferSection;
+  };
+  k.check_invariants = check_graph;
+  return k;
+}
+
+}  // namespace mbk
