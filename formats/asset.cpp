@@ -3,7 +3,6 @@
 #include "formats/asset.h"
 
 #include <Imath/half.h>
-#include <xxhash.h>
 
 #include <algorithm>
 #include <cstring>
@@ -97,14 +96,7 @@ std::optional<ParsedContainer> parse_container(std::span<const uint8_t> bytes, s
                                           std::to_string(h.section_table_offset) + ", " + std::to_string(table_end) +
                                           ")");
 
-  XXH3_state_t* state = XXH3_createState();
-  XXH3_64bits_reset(state);
-  XXH3_64bits_update(state, b, kChecksummedHeaderBytes);
-  XXH3_64bits_update(state, b + h.metadata_offset, h.metadata_size);
-  XXH3_64bits_update(state, b + h.section_table_offset, table_size);
-  const uint64_t computed = XXH3_64bits_digest(state);
-  XXH3_freeState(state);
-  if (computed != h.checksum)
+  if (header_checksum(b, h.metadata_offset, h.metadata_size, h.section_table_offset, table_size) != h.checksum)
     return fail(msg::header_checksum_mismatch, "the header, metadata or section table is damaged");
 
   std::string_view meta_text(reinterpret_cast<const char*>(b + h.metadata_offset), h.metadata_size);
