@@ -8,6 +8,7 @@
 #include "cli/common_options.h"
 #include "formats/asset.h"
 #include "formats/atomic_file.h"
+#include "formats/validate.h"
 
 namespace mbk::cli {
 namespace {
@@ -35,10 +36,7 @@ class InfoCommand : public Command {
     const std::vector<uint8_t> bytes = read_file_bytes(options_.file);
     std::vector<Finding> findings;
     auto parsed = parse_container(bytes, findings);
-    for (const Finding& f : findings)
-      if (f.severity == Severity::error)
-        throw Error(f.id == msg::newer_major.id ? ExitCode::unsupported : ExitCode::invalid_input,
-                    "invalid asset: [" + std::to_string(f.id) + "] " + f.message, options_.file);
+    throw_first_error(findings, options_.file);
     const ParsedContainer& p = *parsed;
     const AssetKind* kind = find_kind(p.header.kind);
     std::vector<bool> checksum_ok;

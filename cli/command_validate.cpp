@@ -33,11 +33,8 @@ class ValidateCommand : public Command {
         std::cerr << "microbake: error: " << e.message() << "\n";
         file_code = static_cast<int>(ExitCode::io_failure);
       }
-      if (file_code == 0 && has_errors(findings, options_.warnings_as_errors)) {
-        bool newer = false;
-        for (const auto& f : findings) newer = newer || f.id == msg::newer_major.id;
-        file_code = static_cast<int>(newer ? ExitCode::unsupported : ExitCode::invalid_input);
-      }
+      if (const Finding* f = first_error(findings, options_.warnings_as_errors); file_code == 0 && f)
+        file_code = static_cast<int>(exit_code_for(*f));
       if (exit_code == 0) exit_code = file_code;
       for (const Finding& f : findings) {
         nlohmann::json details = f.details;

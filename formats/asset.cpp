@@ -9,6 +9,7 @@
 
 #include "formats/atomic_file.h"
 #include "formats/byte_io.h"
+#include "formats/validate.h"
 
 namespace mbk {
 namespace {
@@ -255,11 +256,7 @@ Asset Asset::parse(std::vector<uint8_t> bytes, const std::string& where) {
   std::vector<Finding> findings;
   auto parsed = parse_container(bytes, findings);
   if (parsed) check_sections(*parsed, bytes, findings);
-  for (const Finding& f : findings) {
-    if (f.severity != Severity::error) continue;
-    ExitCode code = f.id == msg::newer_major.id ? ExitCode::unsupported : ExitCode::invalid_input;
-    throw Error(code, "invalid asset: [" + std::to_string(f.id) + "] " + f.message, where);
-  }
+  throw_first_error(findings, where);
   Asset a;
   a.bytes_ = std::move(bytes);
   a.parsed_ = std::move(*parsed);
