@@ -19,12 +19,6 @@ std::string shape_text(const std::vector<uint64_t>& shape) {
   return s + "]";
 }
 
-std::string hex64(uint64_t v) {
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
-  return buf;
-}
-
 class InfoCommand : public Command {
  public:
   void add_options(CLI::App& app) override {
@@ -61,7 +55,7 @@ class InfoCommand : public Command {
                                  {"shape", s.shape},
                                  {"offset", s.offset},
                                  {"bytes", s.byte_length},
-                                 {"checksum", "xxh3:" + hex64(s.checksum)},
+                                 {"checksum", "xxh3:" + checksum_hex(s.checksum)},
                                  {"checksum_ok", bool(checksum_ok[i])}});
       }
       std::cout << j.dump(2) << "\n";
@@ -85,7 +79,7 @@ class InfoCommand : public Command {
         const auto& s = p.sections[i];
         std::printf("  %-20s %-4s %-22s %12llu bytes  xxh3:%s %s\n", s.name.c_str(),
                     std::string(element_name(s.type)).c_str(), shape_text(s.shape).c_str(),
-                    static_cast<unsigned long long>(s.byte_length), hex64(s.checksum).c_str(),
+                    static_cast<unsigned long long>(s.byte_length), checksum_hex(s.checksum).c_str(),
                     checksum_ok[i] ? "ok" : "MISMATCH");
       }
       std::fflush(stdout);

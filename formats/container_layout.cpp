@@ -3,6 +3,7 @@
 
 #include <xxhash.h>
 
+#include <cstdio>
 #include <new>
 
 namespace mbk {
@@ -24,6 +25,12 @@ bool is_valid_section_name(const std::string& name) {
 }
 
 uint64_t checksum_of(const void* data, size_t size) { return XXH3_64bits(data, size); }
+
+std::string checksum_hex(uint64_t checksum) {
+  char digits[17];
+  std::snprintf(digits, sizeof digits, "%016llx", static_cast<unsigned long long>(checksum));
+  return digits;
+}
 
 uint64_t header_checksum(const uint8_t* file, uint64_t metadata_offset, uint64_t metadata_size,
                          uint64_t section_table_offset, uint64_t section_table_size) {
