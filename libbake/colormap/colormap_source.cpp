@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "formats/error.h"
+#include "formats/file_extension.h"
 #include "libbake/image/image_io.h"
 #include "libbake/image/normal_map.h"
 #include "libbake/image/srgb_transfer.h"
@@ -17,11 +18,7 @@ namespace {
 // Largest linear colour accepted in stops: the largest finite half float, so tables survive a half export.
 constexpr double kMaxLinearColor = 65504.0;
 
-bool is_json_path(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext == ".json";
-}
+bool is_json_path(const std::filesystem::path& path) { return lower_extension(path) == ".json"; }
 
 nlohmann::json file_record(const std::filesystem::path& path) {
   return {

@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "formats/error.h"
+#include "formats/file_extension.h"
 
 namespace mbk {
 namespace {
@@ -17,12 +18,6 @@ std::string one_line(std::string text) {
   std::replace(text.begin(), text.end(), '\n', ' ');
   while (!text.empty() && text.back() == ' ') text.pop_back();
   return text.empty() ? "unknown error" : text;
-}
-
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
 }
 
 // Missing files, folders and unreadable files are I/O failures (exit 2), distinct from files that exist
