@@ -8,7 +8,6 @@
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -17,20 +16,18 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tests/scratch_dir.h"
+
 namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
 const fs::path kCasesFile = fs::path(MICROBAKE_SOURCE_DIR) / "tests" / "cli" / "cases.json";
 
-fs::path scratch_dir() {
-  static const fs::path dir = [] {
-    fs::path d = fs::temp_directory_path() / ("microbake_cli_" + std::to_string(::getpid()));
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-  }();
-  return dir;
+// Created on first use, removed when the process ends.
+const fs::path& scratch_dir() {
+  static const mbk::test::ScratchDir dir("cli");
+  return dir.path();
 }
 
 std::string expand(std::string s) {
@@ -87,7 +84,6 @@ class CliEnvironment : public ::testing::Environment {
       ASSERT_EQ(r.exit_code, 0) << "setup failed: " << cmd << "\n" << r.err;
     }
   }
-  void TearDown() override { fs::remove_all(scratch_dir()); }
 };
 const auto* const kEnvironment = ::testing::AddGlobalTestEnvironment(new CliEnvironment);
 

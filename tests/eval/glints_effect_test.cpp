@@ -13,12 +13,13 @@
 #include "libbake/eval/renderer.h"
 #include "libbake/scene/bake_plan.h"
 #include "tests/scene/scene_test_fixtures.h"
+#include "tests/scratch_dir.h"
 
 namespace mbk {
 namespace {
 
 using nlohmann::json;
-using testing::ScratchDir;
+using test::ScratchDir;
 
 json glint_material(const std::string& map, const json& effect) {
   return {{"albedo", {0.05, 0.05, 0.05}},

@@ -16,12 +16,13 @@
 #include "libbake/eval/surface_frame.h"
 #include "libbake/scene/bake_plan.h"
 #include "tests/scene/scene_test_fixtures.h"
+#include "tests/scratch_dir.h"
 
 namespace mbk {
 namespace {
 
 using nlohmann::json;
-using testing::ScratchDir;
+using test::ScratchDir;
 
 json material(const std::string& map, const std::vector<std::string>& effects, double roughness = 0.3) {
   json m = {{"albedo", {0.6, 0.5, 0.4}}, {"specular", {{"roughness", roughness}, {"f0", 0.04}}}, {"effects", effects}};

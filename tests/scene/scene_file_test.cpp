@@ -9,6 +9,7 @@
 #include "formats/error.h"
 #include "libbake/scene/json_fields.h"
 #include "libbake/scene/scene.h"
+#include "tests/scratch_dir.h"
 
 namespace mbk {
 namespace {
@@ -223,8 +224,8 @@ TEST(SceneFile, MissingRequiredKeysAreNamed) {
 }
 
 TEST(SceneFile, PathsAreRelativeToTheSceneFolder) {
-  const fs::path dir = fs::temp_directory_path() /
-                       ("mbk_scene_paths_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+  const test::ScratchDir scratch;
+  const fs::path& dir = scratch.path();
   fs::create_directories(dir / "scenes");
   json j = full_scene();
   j["materials"]["brick"]["normal_map"]["path"] = "../maps/brick.png";
@@ -235,12 +236,10 @@ TEST(SceneFile, PathsAreRelativeToTheSceneFolder) {
   EXPECT_EQ(s.materials.at("brick").normal_map->path_as_written, "../maps/brick.png");
   EXPECT_EQ(s.lights.environments[0].path, fs::path("/absolute/sky.exr"));
   EXPECT_EQ(s.folder, dir / "scenes");
-  fs::remove_all(dir);
 }
 
 TEST(SceneFile, FileErrorsCarryTheFileAndJsonPath) {
-  const fs::path dir = fs::temp_directory_path() / "mbk_scene_file_errors";
-  fs::create_directories(dir);
+  const test::ScratchDir dir;
   try {
     load_scene(dir / "absent.json");
     ADD_FAILURE();
@@ -272,7 +271,6 @@ TEST(SceneFile, FileErrorsCarryTheFileAndJsonPath) {
     EXPECT_EQ(e.code(), ExitCode::invalid_input);
     EXPECT_NE(std::string(e.what()).find("expected an object"), std::string::npos);
   }
-  fs::remove_all(dir);
 }
 
 }  // namespace
