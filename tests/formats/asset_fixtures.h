@@ -1,6 +1,6 @@
 // Test fixtures for the container: a small valid `mip` asset built by hand (its levels computed by brute
 // force over the area each texel covers, independently of the baker), and readable helpers that corrupt one field of a
-// valid file and, where a test wants a deeper check to fire, reseal the checksums around it.
+// valid file and, where a test wants a deeper check to fire, reseal the checksums around it (reseal.h).
 #pragma once
 
 #include <algorithm>
@@ -13,6 +13,7 @@
 #include "formats/byte_io.h"
 #include "formats/container_layout.h"
 #include "formats/mip_levels.h"
+#include "tests/formats/reseal.h"
 
 namespace mbk::test {
 
@@ -90,17 +91,6 @@ inline uint64_t entry_offset(const std::vector<uint8_t>& f, size_t i) {
 }
 inline uint64_t section_data_offset(const std::vector<uint8_t>& f, size_t i) {
   return load_le<uint64_t>(&f[entry_offset(f, i) + 88]);
-}
-
-// Recomputes the header checksum, so that checks after it see the change.
-inline void reseal_header(std::vector<uint8_t>& f) {
-  uint64_t meta_off = load_le<uint64_t>(&f[24]), meta_size = load_le<uint64_t>(&f[32]);
-  uint64_t table_off = load_le<uint64_t>(&f[40]);
-  uint64_t table_size = uint64_t(load_le<uint32_t>(&f[48])) * load_le<uint32_t>(&f[52]);
-  std::vector<uint8_t> covered(f.begin(), f.begin() + kChecksummedHeaderBytes);
-  covered.insert(covered.end(), f.begin() + meta_off, f.begin() + meta_off + meta_size);
-  covered.insert(covered.end(), f.begin() + table_off, f.begin() + table_off + table_size);
-  store_le<uint64_t>(&f[56], checksum_of(covered.data(), covered.size()));
 }
 
 // Recomputes section i's checksum after its data changed, then the header's.
