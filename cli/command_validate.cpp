@@ -1,6 +1,7 @@
 // `microbake validate FILE... [--format text|json] [--warnings-as-errors]`: structure, checksums and each
 // kind's invariants. Findings carry stable ids (formats/validation_messages.h). Exit 0 when every file is
-// valid; otherwise the code of the first failing file: 2 unreadable, 5 newer major version, 3 invalid.
+// valid; otherwise the code of the first failing file: 2 unreadable (finding 1006, and an error line on
+// stderr), 5 newer major version, 3 invalid.
 #include <iostream>
 
 #include "cli/command.h"
@@ -31,6 +32,7 @@ class ValidateCommand : public Command {
       } catch (const Error& e) {
         if (e.code() != ExitCode::io_failure) throw;
         std::cerr << "microbake: error: " << e.message() << "\n";
+        findings.push_back(make_finding(msg::file_unreadable, e.what()));  // so that --format json lists it
         file_code = static_cast<int>(ExitCode::io_failure);
       }
       if (const Finding* f = first_error(findings, options_.warnings_as_errors); file_code == 0 && f)
