@@ -73,11 +73,16 @@ inline nlohmann::json mip_metadata(uint32_t w, uint32_t h, size_t levels) {
           {"statistics", nlohmann::json::object()}};
 }
 
-inline AssetWriter mip_writer(uint32_t w, uint32_t h) {
+// The W x H fixture; for corrupt variants, without its last `dropped` levels and with parameters[key] = value
+// when a key is given (written, not patched, so the metadata may grow).
+inline AssetWriter mip_writer(uint32_t w, uint32_t h, size_t dropped = 0, const std::string& key = "",
+                              const nlohmann::json& value = nullptr) {
   auto levels = brute_force_pyramid(unit_normals(w, h), w, h);
   auto sizes = mip_level_sizes(w, h);
-  AssetWriter writer("mip", mip_metadata(w, h, levels.size()));
-  for (size_t k = 0; k < levels.size(); ++k)
+  nlohmann::json metadata = mip_metadata(w, h, levels.size());
+  if (!key.empty()) metadata["parameters"][key] = value;
+  AssetWriter writer("mip", metadata);
+  for (size_t k = 0; k + dropped < levels.size(); ++k)
     writer.add<float>("level_" + std::to_string(k), {sizes[k].height, sizes[k].width, 3}, levels[k]);
   return writer;
 }
