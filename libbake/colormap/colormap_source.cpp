@@ -3,8 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 
+#include "formats/atomic_file.h"
 #include "formats/error.h"
 #include "formats/file_extension.h"
 #include "libbake/image/image_io.h"
@@ -65,14 +65,9 @@ LoadedColormap load_gradient_image(const std::filesystem::path& path, ColorEncod
 
 LoadedColormap load_stops(const std::filesystem::path& path, ColorEncoding encoding) {
   const std::string where = path.string();
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(ExitCode::io_failure, "cannot open file for reading", where);
-  nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw Error(ExitCode::invalid_input, std::string("malformed JSON: ") + e.what(), where);
-  }
+  const std::vector<uint8_t> bytes = read_file_bytes(path);
+  const nlohmann::json doc =
+      parse_json_strict(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), where);
   LoadedColormap out;
   try {
     JsonObjectReader root(doc, "");

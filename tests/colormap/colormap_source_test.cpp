@@ -125,6 +125,7 @@ TEST(ColormapSource, JsonErrorsNameTheirPath) {
   expect_invalid(R"({"stops": [{"at": 0, "color": 1.5}, {"at": 1, "color": 0}]})", "stops[0].color");
   expect_invalid(R"({"stops": [{"at": 0, "color": 1}]})", "at least two");
   expect_invalid(R"({"stops": [)", "malformed JSON");
+  expect_invalid(R"({"stops": [{"at": 0, "color": 1, "at": 0.5}, {"at": 1, "color": 0}]})", "stops[0].at");
 }
 
 TEST(ColormapSource, MissingFileIsAnIoFailure) {

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <limits>
 
 #include "formats/error.h"
 #include "libbake/scene/json_fields.h"
@@ -209,6 +210,64 @@ TEST(SceneFile, RejectsWrongTypesAndRangesWithTheirPaths) {
     EXPECT_EQ(e.where(), c.where) << c.pointer << " = " << c.value.dump() << ": " << e.what();
     EXPECT_NE(std::string(e.what()).find(c.fragment), std::string::npos) << c.pointer << ": " << e.what();
   }
+}
+
+// parse_json_strict on `text`: the Error it throws, or a failure when it accepts.
+Error strict_parse_error(const std::string& text) {
+  try {
+    parse_json_strict(text, "s.json");
+  } catch (const Error& e) {
+    return e;
+  }
+  ADD_FAILURE() << "accepted: " << text;
+  return Error(ExitCode::success, "");
+}
+
+TEST(SceneFile, DuplicateKeysAreRefusedWithTheirJsonPath) {
+  struct Case {
+    std::string text, where;
+  };
+  const std::vector<Case> cases = {
+      {R"({"camera": {}, "camera": {}})", "s.json: camera"},
+      {R"({"materials": {"brick": {"specular": {"roughness": 0.3, "roughness": 0.5}}}})",
+       "s.json: materials.brick.specular.roughness"},
+      {R"({"shapes": [{"type": "plane"}, {"radius": 1, "type": "sphere", "radius": 2}]})", "s.json: shapes[1].radius"},
+      {R"({"a": [[1, 2], [3, {"k": 1, "k": 2}]]})", "s.json: a[1][1].k"},
+  };
+  for (const Case& c : cases) {
+    const Error e = strict_parse_error(c.text);
+    EXPECT_EQ(e.code(), ExitCode::invalid_input) << c.text;
+    EXPECT_EQ(e.where(), c.where) << c.text;
+    EXPECT_NE(std::string(e.what()).find("duplicate key"), std::string::npos) << e.what();
+  }
+  // The same key in different objects, or the same value twice, is fine.
+  EXPECT_NO_THROW(parse_json_strict(R"({"a": {"k": 1}, "b": {"k": 1}, "c": [{"k": 1}, {"k": 1}]})", "s.json"));
+}
+
+TEST(SceneFile, DuplicateKeyInASceneFileNamesTheFileAndPath) {
+  const test::ScratchDir dir;
+  std::string text = full_scene().dump();
+  text.insert(text.find("\"fov_y\""), "\"width\": 64, ");  // camera.width twice
+  std::ofstream(dir / "dup.json") << text;
+  try {
+    load_scene(dir / "dup.json");
+    ADD_FAILURE() << "accepted a duplicate key";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::invalid_input);
+    EXPECT_EQ(e.where(), (dir / "dup.json").string() + ": camera.width");
+  }
+}
+
+TEST(SceneFile, IntegerErrorsShowTheValueAndNeverWrap) {
+  json j = full_scene();
+  j["camera"]["width"] = 2.5;
+  EXPECT_NE(std::string(parse_error(j).what()).find("expected an integer, found number 2.5"), std::string::npos);
+  j["camera"]["width"] = "32";
+  EXPECT_NE(std::string(parse_error(j).what()).find("found string \"32\""), std::string::npos);
+  // Above INT64_MAX: read as int64_t it used to wrap to -1 ("value -1 is outside").
+  j["camera"]["width"] = std::numeric_limits<uint64_t>::max();
+  const std::string what = parse_error(j).what();
+  EXPECT_NE(what.find("value 18446744073709551615 is outside"), std::string::npos) << what;
 }
 
 TEST(SceneFile, MissingRequiredKeysAreNamed) {
