@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <vector>
 
 #include "formats/asset_writer.h"
@@ -123,14 +124,25 @@ inline std::vector<uint8_t> with_f32_element(std::vector<uint8_t> f, size_t sect
   return f;
 }
 
+// `f` with `edit` applied to its metadata "parameters" (no longer than before), resealed.
+inline std::vector<uint8_t> with_parameters_edited(std::vector<uint8_t> f,
+                                                   const std::function<void(nlohmann::json&)>& edit) {
+  const uint64_t meta_off = load_le<uint64_t>(&f[24]), meta_size = load_le<uint64_t>(&f[32]);
+  nlohmann::json m = nlohmann::json::parse(std::string(f.begin() + meta_off, f.begin() + meta_off + meta_size));
+  edit(m["parameters"]);
+  replace_metadata(f, m.dump());
+  return f;
+}
+
 // `f` with metadata parameters[key] replaced (no longer than before), resealed.
 inline std::vector<uint8_t> with_parameter(std::vector<uint8_t> f, const std::string& key,
                                            const nlohmann::json& value) {
-  const uint64_t meta_off = load_le<uint64_t>(&f[24]), meta_size = load_le<uint64_t>(&f[32]);
-  nlohmann::json m = nlohmann::json::parse(std::string(f.begin() + meta_off, f.begin() + meta_off + meta_size));
-  m["parameters"][key] = value;
-  replace_metadata(f, m.dump());
-  return f;
+  return with_parameters_edited(std::move(f), [&](nlohmann::json& p) { p[key] = value; });
+}
+
+// `f` without metadata parameters[key], resealed.
+inline std::vector<uint8_t> without_parameter(std::vector<uint8_t> f, const std::string& key) {
+  return with_parameters_edited(std::move(f), [&](nlohmann::json& p) { p.erase(key); });
 }
 
 inline float get_f32(const std::vector<uint8_t>& f, uint64_t off) { return load_le<float>(&f[off]); }
