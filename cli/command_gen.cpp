@@ -8,6 +8,7 @@
 #include "cli/command.h"
 #include "cli/common_options.h"
 #include "formats/error.h"
+#include "formats/file_extension.h"
 #include "libbake/crease/curve_set.h"
 #include "libbake/gen/generator.h"
 #include "libbake/gen/panels.h"
@@ -54,8 +55,7 @@ class GenCommand : public Command {
       throw Error(ExitCode::bad_command_line,
                   "unknown kind '" + options_.kind + "' (kinds: " + generator_names() + ")");
     size_ = parse_size(options_.size);
-    std::string ext = std::filesystem::path(options_.output.path).extension().string();
-    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    const std::string ext = lower_extension(options_.output.path);
     if (ext != ".png" && ext != ".exr")
       throw Error(ExitCode::bad_command_line, "gen writes .png (16-bit) or .exr (float) files, not '" + ext + "'",
                   options_.output.path);

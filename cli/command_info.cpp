@@ -8,6 +8,7 @@
 #include "cli/common_options.h"
 #include "formats/asset.h"
 #include "formats/atomic_file.h"
+#include "formats/validate.h"
 
 namespace mbk::cli {
 namespace {
@@ -16,12 +17,6 @@ std::string shape_text(const std::vector<uint64_t>& shape) {
   std::string s = "[";
   for (size_t i = 0; i < shape.size(); ++i) s += (i ? ", " : "") + std::to_string(shape[i]);
   return s + "]";
-}
-
-std::string hex64(uint64_t v) {
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
-  return buf;
 }
 
 class InfoCommand : public Command {
@@ -35,10 +30,7 @@ class InfoCommand : public Command {
     const std::vector<uint8_t> bytes = read_file_bytes(options_.file);
     std::vector<Finding> findings;
     auto parsed = parse_container(bytes, findings);
-    for (const Finding& f : findings)
-      if (f.severity == Severity::error)
-        throw Error(f.id == msg::newer_major.id ? ExitCode::unsupported : ExitCode::invalid_input,
-                    "invalid asset: [" + std::to_string(f.id) + "] " + f.message, options_.file);
+    throw_first_error(findings, options_.file);
     const ParsedContainer& p = *parsed;
     const AssetKind* kind = find_kind(p.header.kind);
     std::vector<bool> checksum_ok;
@@ -63,7 +55,7 @@ class InfoCommand : public Command {
                                  {"shape", s.shape},
                                  {"offset", s.offset},
                                  {"bytes", s.byte_length},
-                                 {"checksum", "xxh3:" + hex64(s.checksum)},
+                                 {"checksum", "xxh3:" + checksum_hex(s.checksum)},
                                  {"checksum_ok", bool(checksum_ok[i])}});
       }
       std::cout << j.dump(2) << "\n";
@@ -87,7 +79,7 @@ class InfoCommand : public Command {
         const auto& s = p.sections[i];
         std::printf("  %-20s %-4s %-22s %12llu bytes  xxh3:%s %s\n", s.name.c_str(),
                     std::string(element_name(s.type)).c_str(), shape_text(s.shape).c_str(),
-                    static_cast<unsigned long long>(s.byte_length), hex64(s.checksum).c_str(),
+                    static_cast<unsigned long long>(s.byte_length), checksum_hex(s.checksum).c_str(),
                     checksum_ok[i] ? "ok" : "MISMATCH");
       }
       std::fflush(stdout);

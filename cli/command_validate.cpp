@@ -1,6 +1,7 @@
 // `microbake validate FILE... [--format text|json] [--warnings-as-errors]`: structure, checksums and each
 // kind's invariants. Findings carry stable ids (formats/validation_messages.h). Exit 0 when every file is
-// valid; otherwise the code of the first failing file: 2 unreadable, 5 newer major version, 3 invalid.
+// valid; otherwise the code of the first failing file: 2 unreadable (finding 1006, and an error line on
+// stderr), 5 newer major version, 3 invalid.
 #include <iostream>
 
 #include "cli/command.h"
@@ -31,13 +32,11 @@ class ValidateCommand : public Command {
       } catch (const Error& e) {
         if (e.code() != ExitCode::io_failure) throw;
         std::cerr << "microbake: error: " << e.message() << "\n";
+        findings.push_back(make_finding(msg::file_unreadable, e.what()));  // so that --format json lists it
         file_code = static_cast<int>(ExitCode::io_failure);
       }
-      if (file_code == 0 && has_errors(findings, options_.warnings_as_errors)) {
-        bool newer = false;
-        for (const auto& f : findings) newer = newer || f.id == msg::newer_major.id;
-        file_code = static_cast<int>(newer ? ExitCode::unsupported : ExitCode::invalid_input);
-      }
+      if (const Finding* f = first_error(findings, options_.warnings_as_errors); file_code == 0 && f)
+        file_code = static_cast<int>(exit_code_for(*f));
       if (exit_code == 0) exit_code = file_code;
       for (const Finding& f : findings) {
         nlohmann::json details = f.details;

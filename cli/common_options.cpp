@@ -1,10 +1,9 @@
 // Shared options (see common_options.h).
 #include "cli/common_options.h"
 
-#include <cctype>
-
 #include "formats/atomic_file.h"
 #include "formats/error.h"
+#include "formats/file_extension.h"
 #include "libbake/core/parallel.h"
 
 namespace mbk::cli {
@@ -43,9 +42,8 @@ void OutputOption::write_with(const std::function<void(const std::filesystem::pa
 void OutputOption::check_writable() const { AtomicFile probe(path); }
 
 void OutputOption::require_extension(const std::string& extension) const {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  if (ext != extension) throw Error(ExitCode::bad_command_line, "the output must end in " + extension, path);
+  if (lower_extension(path) != extension)
+    throw Error(ExitCode::bad_command_line, "the output must end in " + extension, path);
 }
 
 void OutputOption::write_bytes(const std::vector<uint8_t>& bytes) const {

@@ -3,13 +3,13 @@
 #include "formats/asset.h"
 
 #include <Imath/half.h>
-#include <xxhash.h>
 
 #include <algorithm>
 #include <cstring>
 
 #include "formats/atomic_file.h"
 #include "formats/byte_io.h"
+#include "formats/validate.h"
 
 namespace mbk {
 namespace {
@@ -97,14 +97,7 @@ std::optional<ParsedContainer> parse_container(std::span<const uint8_t> bytes, s
                                           std::to_string(h.section_table_offset) + ", " + std::to_string(table_end) +
                                           ")");
 
-  XXH3_state_t* state = XXH3_createState();
-  XXH3_64bits_reset(state);
-  XXH3_64bits_update(state, b, kChecksummedHeaderBytes);
-  XXH3_64bits_update(state, b + h.metadata_offset, h.metadata_size);
-  XXH3_64bits_update(state, b + h.section_table_offset, table_size);
-  const uint64_t computed = XXH3_64bits_digest(state);
-  XXH3_freeState(state);
-  if (computed != h.checksum)
+  if (header_checksum(b, h.metadata_offset, h.metadata_size, h.section_table_offset, table_size) != h.checksum)
     return fail(msg::header_checksum_mismatch, "the header, metadata or section table is damaged");
 
   std::string_view meta_text(reinterpret_cast<const char*>(b + h.metadata_offset), h.metadata_size);
@@ -263,11 +256,7 @@ Asset Asset::parse(std::vector<uint8_t> bytes, const std::string& where) {
   std::vector<Finding> findings;
   auto parsed = parse_container(bytes, findings);
   if (parsed) check_sections(*parsed, bytes, findings);
-  for (const Finding& f : findings) {
-    if (f.severity != Severity::error) continue;
-    ExitCode code = f.id == msg::newer_major.id ? ExitCode::unsupported : ExitCode::invalid_input;
-    throw Error(code, "invalid asset: [" + std::to_string(f.id) + "] " + f.message, where);
-  }
+  throw_first_error(findings, where);
   Asset a;
   a.bytes_ = std::move(bytes);
   a.parsed_ = std::move(*parsed);

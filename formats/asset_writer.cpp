@@ -1,8 +1,6 @@
 // Serializes the .mbk container, version 1.0 (formats/SPEC.md).
 #include "formats/asset_writer.h"
 
-#include <xxhash.h>
-
 #include "formats/asset_kind.h"
 #include "formats/atomic_file.h"
 #include "formats/byte_io.h"
@@ -85,13 +83,7 @@ std::vector<uint8_t> AssetWriter::serialize() const {
     std::copy(sections_[i].bytes.begin(), sections_[i].bytes.end(), out.begin() + offsets[i]);
   }
 
-  XXH3_state_t* state = XXH3_createState();
-  XXH3_64bits_reset(state);
-  XXH3_64bits_update(state, out.data(), kChecksummedHeaderBytes);
-  XXH3_64bits_update(state, out.data() + meta_offset, meta.size());
-  XXH3_64bits_update(state, out.data() + table_offset, table_size);
-  store_le<uint64_t>(&out[56], XXH3_64bits_digest(state));
-  XXH3_freeState(state);
+  store_le<uint64_t>(&out[56], header_checksum(out.data(), meta_offset, meta.size(), table_offset, table_size));
   return out;
 }
 

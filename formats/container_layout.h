@@ -56,4 +56,13 @@ bool is_valid_section_name(const std::string& name);
 // 64-bit XXH3 (seed 0), the one checksum of the format.
 uint64_t checksum_of(const void* data, size_t size);
 
+// A checksum as microbake prints it: 16 lowercase hex digits, most significant first (`info`, the "xxh3:..."
+// content hashes of metadata inputs, the names `bake` gives assets).
+std::string checksum_hex(uint64_t checksum);
+
+// The header checksum (header bytes 56..63): XXH3-64 of header bytes 0..55, then the metadata block, then the
+// section table, hashed as one stream. The caller has checked that both regions lie inside `file`.
+uint64_t header_checksum(const uint8_t* file, uint64_t metadata_offset, uint64_t metadata_size,
+                         uint64_t section_table_offset, uint64_t section_table_size);
+
 }  // namespace mbk

@@ -21,15 +21,9 @@ constexpr double kUnitTolerance = 1e-5;
 constexpr double kMeanTolerance = 2e-6;
 
 void check_mip(const Asset& a, std::vector<Finding>& out) {
-  const auto& params = a.metadata()["parameters"];
-  if (!params.is_object() || !params.contains("width") || !params.contains("height") ||
-      !params["width"].is_number_unsigned() || !params["height"].is_number_unsigned()) {
-    out.push_back(make_finding(msg::mip_bad_parameters, "parameters.width/height missing"));
-    return;
-  }
-  const auto sizes = mip_level_sizes(params["width"].get<uint32_t>(), params["height"].get<uint32_t>());
-  if (sizes.empty()) {
-    out.push_back(make_finding(msg::mip_bad_parameters, "zero width or height"));
+  std::vector<LevelSize> sizes;
+  if (std::string problem = parse_mip_parameters(a.metadata()["parameters"], sizes); !problem.empty()) {
+    out.push_back(make_finding(msg::mip_bad_parameters, problem));
     return;
   }
   const auto read = read_pyramid_levels(a, sizes, 3, msg::mip_level_shape, msg::mip_non_finite, out);

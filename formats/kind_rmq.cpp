@@ -77,35 +77,51 @@ Finding describe_unordered(const RmqLayout& L, LevelRow<Code>& rows, uint64_t co
   return {};
 }
 
-template <typename Code>
-Finding describe_not_nested(const RmqLayout& L, LevelRow<Code>& parents, LevelRow<Code>& children, uint64_t count) {
+// Visits every parent-child pairing of the nesting check once: for each level k >= 1 and row, the level-(k-1)
+// rows `row` and `row + 2^(k-1)` inside the example, each at column offsets dx = 0 and 2^(k-1) (when inside).
+// `visit(k, row, dx, dy, parent, child, n)` sees the n parents of the row from x = 0 and, at the same index, their
+// children at x + dx; it returns false to stop.
+template <typename Code, typename Visit>
+void for_each_nesting_pair(const RmqLayout& L, LevelRow<Code>& parents, LevelRow<Code>& children, Visit visit) {
   for (uint32_t k = 1; k < L.levels; ++k) {
     const uint32_t half = 1u << (k - 1);
     for (uint32_t row = 0; row < L.height; ++row) {
       const Code* p = parents.read(k, row);
       for (uint32_t dy = 0; dy <= half && row + dy < L.height; dy += half) {
         const Code* ch = children.read(k - 1, row + dy);
-        for (uint32_t x = 0; x < L.width; ++x)
-          for (uint32_t dx = 0; dx <= half && x + dx < L.width; dx += half)
-            for (int c = 0; c < 4; ++c) {
-              const Code parent = p[4 * x + c], child = ch[4 * (x + dx) + c];
-              if (c % 2 == 0 ? parent <= child : parent >= child) continue;
-              return make_finding(msg::rmq_not_nested,
-                                  at_text(k, x, row) + ": " + kComponent[c] + " code " + std::to_string(parent) +
-                                      " does not contain child " + at_text(k - 1, x + dx, row + dy) + "'s " +
-                                      std::to_string(child) + " (" + std::to_string(count) + " parent-child pairs)",
-                                  {{"level", k},
-                                   {"x", x},
-                                   {"row", row},
-                                   {"child_x", x + dx},
-                                   {"child_row", row + dy},
-                                   {"component", kComponent[c]},
-                                   {"pairs", count}});
-            }
+        for (uint32_t dx = 0; dx <= half && dx < L.width; dx += half)
+          if (!visit(k, row, dx, dy, p, ch + 4 * dx, L.width - dx)) return;
       }
     }
   }
-  return {};
+}
+
+template <typename Code>
+Finding describe_not_nested(const RmqLayout& L, LevelRow<Code>& parents, LevelRow<Code>& children, uint64_t count) {
+  Finding first;
+  for_each_nesting_pair(
+      L, parents, children,
+      [&](uint32_t k, uint32_t row, uint32_t dx, uint32_t dy, const Code* p, const Code* ch, uint32_t n) {
+        for (uint32_t x = 0; x < n; ++x)
+          for (int c = 0; c < 4; ++c) {
+            const Code parent = p[4 * x + c], child = ch[4 * x + c];
+            if (c % 2 == 0 ? parent <= child : parent >= child) continue;
+            first = make_finding(msg::rmq_not_nested,
+                                 at_text(k, x, row) + ": " + kComponent[c] + " code " + std::to_string(parent) +
+                                     " does not contain child " + at_text(k - 1, x + dx, row + dy) + "'s " +
+                                     std::to_string(child) + " (" + std::to_string(count) + " parent-child pairs)",
+                                 {{"level", k},
+                                  {"x", x},
+                                  {"row", row},
+                                  {"child_x", x + dx},
+                                  {"child_row", row + dy},
+                                  {"component", kComponent[c]},
+                                  {"pairs", count}});
+            return false;
+          }
+        return true;
+      });
+  return first;
 }
 
 template <typename Code>
@@ -114,17 +130,11 @@ void check_codes(const RmqLayout& L, const uint8_t* table, std::vector<Finding>&
   uint64_t unordered = 0, not_nested = 0;
   for (uint32_t k = 0; k < L.levels; ++k)
     for (uint32_t row = 0; row < L.height; ++row) unordered += count_unordered(parents.read(k, row), L.width);
-  for (uint32_t k = 1; k < L.levels; ++k) {
-    const uint32_t half = 1u << (k - 1);
-    for (uint32_t row = 0; row < L.height; ++row) {
-      const Code* p = parents.read(k, row);
-      for (uint32_t dy = 0; dy <= half && row + dy < L.height; dy += half) {
-        const Code* ch = children.read(k - 1, row + dy);
-        not_nested += count_not_containing(p, ch, L.width);                                        // child at x
-        if (half < L.width) not_nested += count_not_containing(p, ch + 4 * half, L.width - half);  // at x + half
-      }
-    }
-  }
+  for_each_nesting_pair(L, parents, children,
+                        [&](uint32_t, uint32_t, uint32_t, uint32_t, const Code* p, const Code* ch, uint32_t n) {
+                          not_nested += count_not_containing(p, ch, n);
+                          return true;
+                        });
   if (unordered) out.push_back(describe_unordered(L, parents, unordered));
   if (not_nested) out.push_back(describe_not_nested(L, parents, children, not_nested));
 }

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 namespace mbk {
 
 struct LevelSize {
@@ -20,6 +22,14 @@ struct LevelSize {
 
 // Empty when width or height is 0.
 std::vector<LevelSize> mip_level_sizes(uint32_t width, uint32_t height);
+
+// The level sizes a `mip` asset's metadata "parameters" describe: "width" and "height" integers in 1..2^32 - 1,
+// and "levels" equal to the number of levels of that size (mip_level_sizes). Returns "" and sets `sizes` when
+// they are, else what is wrong, telling a missing key from a wrong value and showing the value:
+// "parameters.width is missing", "parameters.width is -4, not an integer in 1..4294967295",
+// "parameters.levels is 3, but a 16x16 pyramid has 5 levels". The one reading of these parameters, shared by
+// `validate` (formats/kind_mip.cpp) and the evaluator (libbake/eval/mip_effect.cpp).
+std::string parse_mip_parameters(const nlohmann::json& parameters, std::vector<LevelSize>& sizes);
 
 // One finest texel under a level texel along an axis, and its share of the texel's length.
 struct MipWeight {

@@ -17,9 +17,22 @@ std::vector<Finding> validate_asset(std::span<const uint8_t> bytes) {
 }
 
 bool has_errors(const std::vector<Finding>& findings, bool warnings_as_errors) {
+  return first_error(findings, warnings_as_errors) != nullptr;
+}
+
+const Finding* first_error(const std::vector<Finding>& findings, bool warnings_as_errors) {
   for (const Finding& f : findings)
-    if (f.severity == Severity::error || warnings_as_errors) return true;
-  return false;
+    if (f.severity == Severity::error || warnings_as_errors) return &f;
+  return nullptr;
+}
+
+ExitCode exit_code_for(const Finding& f) {
+  return f.id == msg::newer_major.id ? ExitCode::unsupported : ExitCode::invalid_input;
+}
+
+void throw_first_error(const std::vector<Finding>& findings, const std::string& where) {
+  if (const Finding* f = first_error(findings))
+    throw Error(exit_code_for(*f), "invalid asset: [" + std::to_string(f->id) + "] " + f->message, where);
 }
 
 }  // namespace mbk

@@ -24,6 +24,7 @@ std::span<const MessageInfo> all_messages() {
       text_mode_corruption,
       file_size_mismatch,
       padding_not_zero,
+      file_unreadable,
       newer_major,
       bad_major,
       newer_minor,

@@ -39,6 +39,8 @@ inline constexpr MessageInfo text_mode_corruption{1003, Severity::error,
 inline constexpr MessageInfo file_size_mismatch{
     1004, Severity::error, "file size differs from the size recorded in the header (truncated or extended)"};
 inline constexpr MessageInfo padding_not_zero{1005, Severity::error, "padding between regions is not zero"};
+// Reported by `validate` for a file it cannot read at all (missing, a folder, no permission): exit 2, not 3.
+inline constexpr MessageInfo file_unreadable{1006, Severity::error, "file cannot be read"};
 // 2xxx: header and metadata
 inline constexpr MessageInfo newer_major{2001, Severity::error, "asset written by a newer major format version"};
 inline constexpr MessageInfo bad_major{2002, Severity::error, "invalid major format version"};

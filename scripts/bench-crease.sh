@@ -10,6 +10,7 @@
 #   bash scripts/bench-crease.sh [BUILD_DIR]        # default build/ (a Release build with the tests)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/report-block.sh
 build="${1:-build}"
 exe="$build/microbake"
 tests="$build/tests/microbake_tests"
@@ -111,17 +112,5 @@ script's seeded generator): bake $(ms "$random_bake") ms, $(ratio "$random_bake"
 EOF
 )
 
-mkdir -p "$(dirname "$report")"
-[ -f "$report" ] || printf '# Crisp creases ([Parilov05]): report\n\n' >"$report"
-if grep -q 'crease-bench:begin' "$report"; then
-  python3 - "$report" "$block" <<'PY'
-import re, sys
-path, block = sys.argv[1], sys.argv[2]
-text = open(path).read()
-text = re.sub(r"<!-- crease-bench:begin.*?<!-- crease-bench:end -->", lambda m: block, text, flags=re.S)
-open(path, "w").write(text)
-PY
-else
-  printf '%s\n' "$block" >>"$report"
-fi
+report_block "$report" crease-bench "Crisp creases ([Parilov05]): report" "$block"
 echo "bench: wrote $report"

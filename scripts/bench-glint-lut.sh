@@ -8,6 +8,7 @@
 #   bash scripts/bench-glint-lut.sh [BUILD_DIR]        # default build/ (a Release build)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/report-block.sh
 build="${1:-build}"
 exe="$build/microbake"
 report=examples/results/glint/REPORT.md
@@ -130,17 +131,5 @@ ${real_block}
 EOF
 )
 
-mkdir -p "$(dirname "$report")"
-[ -f "$report" ] || printf '# Glint tables: benchmark report\n\n' >"$report"
-if grep -q 'lut-bench:begin' "$report"; then
-  python3 - "$report" "$block" <<'PY'
-import re, sys
-path, block = sys.argv[1], sys.argv[2]
-text = open(path).read()
-text = re.sub(r"<!-- lut-bench:begin.*?<!-- lut-bench:end -->", lambda m: block, text, flags=re.S)
-open(path, "w").write(text)
-PY
-else
-  printf '\n%s\n' "$block" >>"$report"
-fi
+report_block "$report" lut-bench "Glint tables: benchmark report" "$block"
 echo "bench: wrote the lut block of $report"

@@ -8,6 +8,7 @@
 #   bash scripts/bench-glint-pndf.sh [BUILD_DIR]        # default build/ (a configured Release build)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/report-block.sh
 build="${1:-build}"
 report=examples/results/glint/REPORT.md
 [ -f "$build/build.ninja" ] || { echo "bench: $build is not a configured build (scripts/build.sh $build)" >&2; exit 2; }
@@ -55,17 +56,5 @@ are slower).
 EOF
 )
 
-mkdir -p "$(dirname "$report")"
-[ -f "$report" ] || printf '# Glint tables: benchmark report\n\n' >"$report"
-if grep -q 'pndf-bench:begin' "$report"; then
-  python3 - "$report" "$block" <<'PY'
-import re, sys
-path, block = sys.argv[1], sys.argv[2]
-text = open(path).read()
-text = re.sub(r"<!-- pndf-bench:begin.*?<!-- pndf-bench:end -->", lambda m: block, text, flags=re.S)
-open(path, "w").write(text)
-PY
-else
-  printf '\n%s\n' "$block" >>"$report"
-fi
+report_block "$report" pndf-bench "Glint tables: benchmark report" "$block"
 echo "bench: wrote the pndf block of $report"

@@ -8,6 +8,7 @@
 #   bash scripts/bench-glint-rmq.sh [BUILD_DIR]        # default build/ (a Release build with the tests)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/report-block.sh
 build="${1:-build}"
 exe="$build/microbake"
 tests="$build/tests/microbake_tests"
@@ -111,17 +112,5 @@ ${rect_rows}
 EOF
 )
 
-mkdir -p "$(dirname "$report")"
-[ -f "$report" ] || printf '# Glint tables: benchmark report\n\n' >"$report"
-if grep -q 'rmq-bench:begin' "$report"; then
-  python3 - "$report" "$block" <<'PY'
-import re, sys
-path, block = sys.argv[1], sys.argv[2]
-text = open(path).read()
-text = re.sub(r"<!-- rmq-bench:begin.*?<!-- rmq-bench:end -->", lambda m: block, text, flags=re.S)
-open(path, "w").write(text)
-PY
-else
-  printf '%s\n' "$block" >>"$report"
-fi
+report_block "$report" rmq-bench "Glint tables: benchmark report" "$block"
 echo "bench: wrote the rmq block of $report"

@@ -8,6 +8,7 @@
 #   bash scripts/crease-pictures.sh [BUILD_DIR]        # default build/ (a Release build)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/report-block.sh
 build="${1:-build}"
 out=examples/results/crease
 report=$out/REPORT.md
@@ -54,16 +55,5 @@ $numbers
 <!-- crease-pictures:end -->
 EOF
 )
-[ -f "$report" ] || printf '# Crisp creases ([Parilov05]): report\n\n' >"$report"
-if grep -q 'crease-pictures:begin' "$report"; then
-  python3 - "$report" "$block" <<'PY'
-import re, sys
-path, block = sys.argv[1], sys.argv[2]
-text = open(path).read()
-text = re.sub(r"<!-- crease-pictures:begin.*?<!-- crease-pictures:end -->", lambda m: block, text, flags=re.S)
-open(path, "w").write(text)
-PY
-else
-  printf '%s\n' "$block" >>"$report"
-fi
+report_block "$report" crease-pictures "Crisp creases ([Parilov05]): report" "$block"
 echo "crease-pictures: wrote $out/panels_{gen,exact,profiles}.png and the pictures block of $report"

@@ -3,9 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 
+#include "formats/atomic_file.h"
 #include "formats/error.h"
+#include "formats/file_extension.h"
 #include "libbake/image/image_io.h"
 #include "libbake/image/normal_map.h"
 #include "libbake/image/srgb_transfer.h"
@@ -17,11 +18,7 @@ namespace {
 // Largest linear colour accepted in stops: the largest finite half float, so tables survive a half export.
 constexpr double kMaxLinearColor = 65504.0;
 
-bool is_json_path(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext == ".json";
-}
+bool is_json_path(const std::filesystem::path& path) { return lower_extension(path) == ".json"; }
 
 nlohmann::json file_record(const std::filesystem::path& path) {
   return {
@@ -68,14 +65,9 @@ LoadedColormap load_gradient_image(const std::filesystem::path& path, ColorEncod
 
 LoadedColormap load_stops(const std::filesystem::path& path, ColorEncoding encoding) {
   const std::string where = path.string();
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(ExitCode::io_failure, "cannot open file for reading", where);
-  nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw Error(ExitCode::invalid_input, std::string("malformed JSON: ") + e.what(), where);
-  }
+  const std::vector<uint8_t> bytes = read_file_bytes(path);
+  const nlohmann::json doc =
+      parse_json_strict(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), where);
   LoadedColormap out;
   try {
     JsonObjectReader root(doc, "");

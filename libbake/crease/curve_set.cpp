@@ -2,13 +2,12 @@
 // json_curves.cpp and svg_curves.cpp.
 #include "libbake/crease/curve_set.h"
 
-#include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <sstream>
 
 #include "formats/atomic_file.h"
 #include "formats/error.h"
+#include "formats/file_extension.h"
 
 namespace mbk {
 namespace {
@@ -22,9 +21,7 @@ std::string point_text(const Vec2& p) {
 }  // namespace
 
 CurveSet load_curves(const std::filesystem::path& path, uint32_t width, uint32_t height) {
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
+  const std::string extension = lower_extension(path);
   if (extension != ".json" && extension != ".svg")
     throw Error(ExitCode::bad_command_line, "curves must be a .json or .svg file", path.string());
   const std::vector<uint8_t> bytes = read_file_bytes(path);

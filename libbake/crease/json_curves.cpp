@@ -4,17 +4,13 @@
 
 #include "formats/error.h"
 #include "libbake/crease/curve_set.h"
+#include "libbake/scene/json_fields.h"
 
 namespace mbk {
 
 CurveSet parse_json_curves(const std::string& text, const std::string& file, uint32_t width, uint32_t height) {
   using nlohmann::json;
-  json doc;
-  try {
-    doc = json::parse(text);
-  } catch (const json::exception& e) {  // parse errors, and numbers overflowing double
-    throw Error(ExitCode::invalid_input, std::string("malformed JSON: ") + e.what(), file);
-  }
+  const json doc = parse_json_strict(text, file);
   auto fail = [&](const std::string& what, const std::string& path) {
     throw Error(ExitCode::invalid_input, what, file + ": " + path);
   };

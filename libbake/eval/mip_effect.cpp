@@ -13,12 +13,9 @@ NormalPyramid load_mip_asset(const std::filesystem::path& file) {
   if (asset.kind().name != "mip")
     throw Error(ExitCode::invalid_input, "expected a 'mip' asset, found '" + std::string(asset.kind().name) + "'",
                 file.string());
-  const nlohmann::json& params = asset.metadata()["parameters"];
-  if (!params.is_object() || !params.value("width", nlohmann::json()).is_number_unsigned() ||
-      !params.value("height", nlohmann::json()).is_number_unsigned())
-    throw Error(ExitCode::invalid_input, "mip asset lacks parameters.width/height", file.string());
-  const auto sizes = mip_level_sizes(params["width"].get<uint32_t>(), params["height"].get<uint32_t>());
-  if (sizes.empty()) throw Error(ExitCode::invalid_input, "mip asset of zero size", file.string());
+  std::vector<LevelSize> sizes;
+  if (std::string problem = parse_mip_parameters(asset.metadata()["parameters"], sizes); !problem.empty())
+    throw Error(ExitCode::invalid_input, "invalid mip asset: " + problem, file.string());
   NormalPyramid pyramid;
   for (size_t k = 0; k < sizes.size(); ++k) {
     const std::string name = "level_" + std::to_string(k);

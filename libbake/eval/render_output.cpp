@@ -2,22 +2,12 @@
 #include "libbake/eval/render_output.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 
 #include "formats/error.h"
+#include "formats/file_extension.h"
 
 namespace mbk {
-namespace {
-
-std::string lower_extension(const std::filesystem::path& p) {
-  std::string e = p.extension().string();
-  for (char& c : e) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return e;
-}
-
-}  // namespace
-
 double srgb_oetf(double c) { return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055; }
 
 Image tone_map_for_display(const Image& linear) {

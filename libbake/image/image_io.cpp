@@ -2,12 +2,16 @@
 #include "libbake/image/image_io.h"
 
 #include <OpenImageIO/imageio.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
+#include <mutex>
 
 #include "formats/error.h"
+#include "formats/file_extension.h"
 
 namespace mbk {
 namespace {
@@ -19,10 +23,69 @@ std::string one_line(std::string text) {
   return text.empty() ? "unknown error" : text;
 }
 
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
+// Codec libraries print some complaints straight to stderr (libpng: "libpng error: IDAT: Read error"), which
+// would put a line of theirs before our one error line. While a guard lives, fd 2 points at a temporary file;
+// the destructor points it back. OpenImageIO reports the same problems through geterror(), so our message
+// carries them; captured() is the fallback when it says nothing. fd 2 belongs to the whole process: one guard
+// at a time, and anything another thread prints meanwhile is held back too (image loading happens before the
+// work that shows progress). Test: CLI cases MipTruncatedPng, MipTruncatedJpeg.
+class QuietStderr {
+ public:
+  QuietStderr() : lock_(mutex()) {
+    std::fflush(stderr);
+    sink_ = std::tmpfile();
+    saved_ = sink_ ? ::dup(STDERR_FILENO) : -1;
+    if (saved_ >= 0 && ::dup2(::fileno(sink_), STDERR_FILENO) < 0) {
+      ::close(saved_);
+      saved_ = -1;
+    }
+  }
+  ~QuietStderr() {
+    restore();
+    if (sink_) std::fclose(sink_);
+  }
+  QuietStderr(const QuietStderr&) = delete;
+  QuietStderr& operator=(const QuietStderr&) = delete;
+
+  // What was printed to stderr so far (the guard keeps capturing).
+  std::string captured() {
+    if (!sink_) return {};
+    std::fflush(stderr);
+    std::string text;
+    std::rewind(sink_);
+    for (int c; (c = std::fgetc(sink_)) != EOF;) text += char(c);
+    return text;
+  }
+
+ private:
+  void restore() {
+    if (saved_ < 0) return;
+    std::fflush(stderr);
+    ::dup2(saved_, STDERR_FILENO);
+    ::close(saved_);
+    saved_ = -1;
+  }
+  static std::mutex& mutex() {
+    static std::mutex m;
+    return m;
+  }
+  std::lock_guard<std::mutex> lock_;
+  std::FILE* sink_ = nullptr;
+  int saved_ = -1;
+};
+
+// OpenImageIO's `message`, else what the codec printed, as one line.
+std::string codec_message(std::string message, QuietStderr& quiet) {
+  return one_line(message.empty() ? quiet.captured() : std::move(message));
+}
+
+// Throws "cannot decode image" when a read or close of `in` failed or left a message: a truncated JPEG decodes
+// "successfully" (libjpeg fills the rest with grey) and leaves only "Premature end of JPEG file" behind.
+void require_decoded(bool ok, OIIO::ImageInput& in, QuietStderr& quiet, const std::filesystem::path& path) {
+  std::string message = in.geterror();  // has_error() does not see these messages in OpenImageIO 2.4
+  if (ok && message.empty()) return;
+  throw Error(ExitCode::invalid_input, "cannot decode image: " + codec_message(std::move(message), quiet),
+              path.string());
 }
 
 // Missing files, folders and unreadable files are I/O failures (exit 2), distinct from files that exist
@@ -42,15 +105,19 @@ bool is_float_type(OIIO::TypeDesc t) {
          t.basetype == OIIO::TypeDesc::DOUBLE;
 }
 
-// Opens an image and checks that it is a flat 2-D image microbake can hold.
-std::unique_ptr<OIIO::ImageInput> open_image(const std::filesystem::path& path, ImageHeader& header) {
+// Opens an image and checks that it is a flat 2-D image microbake can hold. The caller holds `quiet` until the
+// image is closed.
+std::unique_ptr<OIIO::ImageInput> open_image(const std::filesystem::path& path, ImageHeader& header,
+                                             QuietStderr& quiet) {
   require_readable_file(path);
   OIIO::ImageSpec config;
   // Without this, OpenImageIO multiplies colour by alpha for PNG/TGA/TIFF: a normal map whose alpha holds
   // a height map would come back scaled (test: NormalMapDecode.AlphaDoesNotScaleNormals).
   config.attribute("oiio:UnassociatedAlpha", 1);
   auto in = OIIO::ImageInput::open(path.string(), &config);
-  if (!in) throw Error(ExitCode::invalid_input, "not a readable image: " + one_line(OIIO::geterror()), path.string());
+  if (!in)
+    throw Error(ExitCode::invalid_input, "not a readable image: " + codec_message(OIIO::geterror(), quiet),
+                path.string());
   const OIIO::ImageSpec& spec = in->spec();
   if (spec.deep) throw Error(ExitCode::invalid_input, "deep images are not supported", path.string());
   if (spec.depth > 1) throw Error(ExitCode::invalid_input, "volume images are not supported", path.string());
@@ -80,22 +147,24 @@ std::vector<T> quantize(const std::vector<float>& pixels, double max_code) {
 }  // namespace
 
 ImageHeader read_image_header(const std::filesystem::path& path) {
+  QuietStderr quiet;
   ImageHeader header;
-  open_image(path, header);
+  open_image(path, header, quiet);
   return header;
 }
 
 Image load_image(const std::filesystem::path& path, ImageFileInfo* info) {
+  QuietStderr quiet;  // declared first: lives until `in` is closed and destroyed
   ImageHeader header;
-  auto in = open_image(path, header);
+  auto in = open_image(path, header, quiet);
   Image image;
   image.width = header.width;
   image.height = header.height;
   image.channels = header.info.file_channels;
   image.pixels.resize(size_t(image.width) * image.height * image.channels);
-  if (!in->read_image(0, 0, 0, int(image.channels), OIIO::TypeDesc::FLOAT, image.pixels.data()))
-    throw Error(ExitCode::invalid_input, "cannot decode image: " + one_line(in->geterror()), path.string());
-  in->close();
+  require_decoded(in->read_image(0, 0, 0, int(image.channels), OIIO::TypeDesc::FLOAT, image.pixels.data()), *in, quiet,
+                  path);
+  require_decoded(in->close(), *in, quiet, path);
   if (info) *info = header.info;
   return image;
 }

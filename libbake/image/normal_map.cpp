@@ -5,9 +5,9 @@
 #include <xxhash.h>
 
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 
+#include "formats/container_layout.h"
 #include "formats/error.h"
 #include "libbake/core/parallel.h"
 #include "libbake/image/image_io.h"
@@ -74,12 +74,6 @@ struct RowFaults {
   TexelFault first = TexelFault::none;
 };
 
-std::string hex16(uint64_t v) {
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
-  return buf;
-}
-
 }  // namespace
 
 std::string convention_name(YConvention c) { return c == YConvention::plus_y ? "+Y" : "-Y"; }
@@ -120,7 +114,7 @@ std::string file_content_hash(const std::filesystem::path& path) {
   const uint64_t digest = XXH3_64bits_digest(state);
   XXH3_freeState(state);
   if (failed) throw Error(ExitCode::io_failure, "read error", path.string());
-  return "xxh3:" + hex16(digest);
+  return "xxh3:" + checksum_hex(digest);
 }
 
 nlohmann::json normal_map_conventions() {

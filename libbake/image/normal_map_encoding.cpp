@@ -1,15 +1,13 @@
 // NormalMap -> image encodings (see normal_map_encoding.h).
 #include "libbake/image/normal_map_encoding.h"
 
-#include <algorithm>
-
 #include "formats/error.h"
+#include "formats/file_extension.h"
 
 namespace mbk {
 
 NormalEncoding encoding_for_path(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  const std::string ext = lower_extension(path);
   if (ext == ".exr") return NormalEncoding::float_vector;
   for (const char* e : {".png", ".tif", ".tiff", ".tga", ".jpg", ".jpeg"})
     if (ext == e) return NormalEncoding::unsigned_codes;

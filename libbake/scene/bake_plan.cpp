@@ -2,7 +2,6 @@
 #include "libbake/scene/bake_plan.h"
 
 #include <cctype>
-#include <cstdio>
 #include <map>
 
 #include "formats/container_layout.h"
@@ -24,12 +23,6 @@ std::string file_stem_for(const fs::path& map) {
   for (char& c : stem)
     if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
   return stem.empty() ? "map" : stem;
-}
-
-std::string hex8(uint64_t v) {
-  char buf[9];
-  std::snprintf(buf, sizeof buf, "%08x", static_cast<unsigned>(v >> 32));
-  return buf;
 }
 
 }  // namespace
@@ -60,7 +53,7 @@ std::vector<PlannedAsset> plan_assets(const Scene& scene) {
           const std::string text = request.dump();
           PlannedAsset a;
           a.file_name = file_stem_for(recipe.inputs.empty() ? fs::path("asset") : recipe.inputs.front().path) + "." +
-                        recipe.kind + "." + hex8(checksum_of(text.data(), text.size())) + ".mbk";
+                        recipe.kind + "." + checksum_hex(checksum_of(text.data(), text.size())).substr(0, 8) + ".mbk";
           a.recipe = std::move(recipe);
           plan.push_back(std::move(a));
         }

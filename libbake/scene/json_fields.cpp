@@ -13,7 +13,13 @@ namespace {
   throw Error(ExitCode::invalid_input, what, path);
 }
 
-std::string type_name(const nlohmann::json& v) { return v.type_name(); }
+// "number 2.5", "string \"3\"", "object": the type, and the value when it is short enough to quote.
+std::string found_text(const nlohmann::json& v) {
+  if (v.is_structured()) return v.type_name();
+  std::string text = v.dump();
+  if (text.size() > 40) text = text.substr(0, 37) + "...";
+  return std::string(v.type_name()) + " " + text;
+}
 
 std::string number_text(double x) {
   std::ostringstream s;
@@ -22,6 +28,55 @@ std::string number_text(double x) {
 }
 
 }  // namespace
+
+nlohmann::json parse_json_strict(std::string_view text, const std::string& file) {
+  using Event = nlohmann::json::parse_event_t;
+  // The open objects and arrays: their JSON paths, the keys seen so far, and where the parser is in each.
+  struct Open {
+    bool object;
+    std::string path;
+    std::set<std::string> keys;
+    std::string key;   // objects: the key of the current member
+    size_t index = 0;  // arrays: the index of the current element
+  };
+  std::vector<Open> open;
+  auto current_path = [&]() -> std::string {
+    if (open.empty()) return "";
+    const Open& o = open.back();
+    return o.object ? json_child_path(o.path, o.key) : json_index_path(o.path, o.index);
+  };
+  auto element_done = [&] {
+    if (!open.empty() && !open.back().object) ++open.back().index;
+  };
+  const nlohmann::json::parser_callback_t track = [&](int, Event event, nlohmann::json& parsed) {
+    switch (event) {
+      case Event::object_start:
+      case Event::array_start:
+        open.push_back({event == Event::object_start, current_path(), {}, {}, 0});
+        break;
+      case Event::key:
+        open.back().key = parsed.get<std::string>();
+        if (!open.back().keys.insert(open.back().key).second)
+          throw Error(ExitCode::invalid_input, "duplicate key '" + open.back().key + "' (a key may appear once)",
+                      file + ": " + current_path());
+        break;
+      case Event::object_end:
+      case Event::array_end:
+        open.pop_back();
+        element_done();
+        break;
+      case Event::value:
+        element_done();
+        break;
+    }
+    return true;
+  };
+  try {
+    return nlohmann::json::parse(text.begin(), text.end(), track);
+  } catch (const nlohmann::json::exception& e) {  // parse errors, and numbers overflowing double
+    throw Error(ExitCode::invalid_input, std::string("malformed JSON: ") + e.what(), file);
+  }
+}
 
 std::string json_child_path(const std::string& parent, const std::string& key) {
   return parent.empty() ? key : parent + "." + key;
@@ -32,7 +87,7 @@ std::string json_index_path(const std::string& parent, size_t index) {
 
 JsonObjectReader::JsonObjectReader(const nlohmann::json& value, std::string path)
     : object_(value), path_(std::move(path)) {
-  if (!value.is_object()) fail("expected an object, found " + type_name(value), path_.empty() ? "(top level)" : path_);
+  if (!value.is_object()) fail("expected an object, found " + found_text(value), path_.empty() ? "(top level)" : path_);
 }
 
 const nlohmann::json* JsonObjectReader::optional(const std::string& key) {
@@ -57,7 +112,7 @@ void JsonObjectReader::reject_unknown_keys() const {
 }
 
 double json_number(const nlohmann::json& v, const std::string& path, double lo, double hi) {
-  if (!v.is_number()) fail("expected a number, found " + type_name(v), path);
+  if (!v.is_number()) fail("expected a number, found " + found_text(v), path);
   const double x = v.get<double>();
   if (!std::isfinite(x) || x < lo || x > hi)
     fail("value " + number_text(x) + " is outside [" + number_text(lo) + ", " + number_text(hi) + "]", path);
@@ -65,20 +120,22 @@ double json_number(const nlohmann::json& v, const std::string& path, double lo, 
 }
 
 uint32_t json_uint(const nlohmann::json& v, const std::string& path, uint32_t lo, uint32_t hi) {
-  if (!v.is_number_integer()) fail("expected an integer, found " + type_name(v), path);
-  const int64_t x = v.get<int64_t>();
-  if (x < int64_t(lo) || x > int64_t(hi))
-    fail("value " + std::to_string(x) + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]", path);
-  return uint32_t(x);
+  if (!v.is_number_integer()) fail("expected an integer, found " + found_text(v), path);
+  // Above INT64_MAX only unsigned JSON integers exist: read those as uint64_t, so that none wraps to negative.
+  const bool in_range = v.is_number_unsigned() ? v.get<uint64_t>() >= lo && v.get<uint64_t>() <= hi
+                                               : v.get<int64_t>() >= int64_t(lo) && v.get<int64_t>() <= int64_t(hi);
+  if (!in_range)
+    fail("value " + v.dump() + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]", path);
+  return v.get<uint32_t>();
 }
 
 bool json_bool(const nlohmann::json& v, const std::string& path) {
-  if (!v.is_boolean()) fail("expected true or false, found " + type_name(v), path);
+  if (!v.is_boolean()) fail("expected true or false, found " + found_text(v), path);
   return v.get<bool>();
 }
 
 std::string json_string(const nlohmann::json& v, const std::string& path) {
-  if (!v.is_string()) fail("expected a string, found " + type_name(v), path);
+  if (!v.is_string()) fail("expected a string, found " + found_text(v), path);
   return v.get<std::string>();
 }
 

@@ -1,4 +1,5 @@
-// Strict reading of JSON objects (scene files, later graph files): every key of an object must be read,
+// Strict reading of JSON (scene files, colour-map stops, crease curves): parse_json_strict refuses an object
+// that names a key twice (the JSON parser would keep the last one silently); every key of an object must be read,
 // and a key nobody read is an error naming its JSON path ("materials.brick.rougness"), so a typo is never
 // silently ignored (DESIGN.md, "Unknown options and unknown JSON keys are errors"). Wrong types and values
 // out of range are errors naming their path too. Errors are Error(invalid_input, what, json_path); callers
@@ -7,6 +8,7 @@
 
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -14,6 +16,10 @@
 #include "libbake/core/eigen.h"
 
 namespace mbk {
+
+// Parses a JSON document from `file`. Error(invalid_input) "malformed JSON: ..." at `file`, or
+// "duplicate key 'k'" at "<file>: <JSON path of the second k>" (e.g. "scene.json: materials.brick.roughness").
+nlohmann::json parse_json_strict(std::string_view text, const std::string& file);
 
 // "a.b" + "c" -> "a.b.c"; "" + "c" -> "c".
 std::string json_child_path(const std::string& parent, const std::string& key);
@@ -42,7 +48,7 @@ class JsonObjectReader {
 
 // Typed values; `path` names the value in errors. Numbers must be finite and inside [lo, hi].
 double json_number(const nlohmann::json& v, const std::string& path, double lo, double hi);
-// Positive integer in [lo, hi].
+// Integer in [lo, hi] (any JSON integer, also beyond 64 bits signed, is compared exactly).
 uint32_t json_uint(const nlohmann::json& v, const std::string& path, uint32_t lo, uint32_t hi);
 bool json_bool(const nlohmann::json& v, const std::string& path);
 std::string json_string(const nlohmann::json& v, const std::string& path);

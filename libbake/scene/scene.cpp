@@ -216,12 +216,8 @@ Scene parse_scene(const nlohmann::json& json, const fs::path& folder) {
 
 Scene load_scene(const fs::path& file) {
   const std::vector<uint8_t> bytes = read_file_bytes(file);
-  nlohmann::json json;
-  try {
-    json = nlohmann::json::parse(bytes.begin(), bytes.end());
-  } catch (const nlohmann::json::parse_error& e) {
-    throw Error(ExitCode::invalid_input, std::string("malformed JSON: ") + e.what(), file.string());
-  }
+  const nlohmann::json json =
+      parse_json_strict(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), file.string());
   fs::path folder = file.parent_path();
   if (folder.empty()) folder = ".";
   try {

@@ -84,12 +84,8 @@ ExemplarGraph parse_exemplar_graph(const nlohmann::json& json, const std::string
 
 ExemplarGraph load_exemplar_graph(const std::filesystem::path& file) {
   const std::vector<uint8_t> bytes = read_file_bytes(file);
-  nlohmann::json json;
-  try {
-    json = nlohmann::json::parse(bytes.begin(), bytes.end());
-  } catch (const nlohmann::json::parse_error& e) {
-    throw Error(ExitCode::invalid_input, std::string("malformed JSON: ") + e.what(), file.string());
-  }
+  const nlohmann::json json =
+      parse_json_strict(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), file.string());
   std::filesystem::path folder = file.parent_path();
   if (folder.empty()) folder = ".";
   return parse_exemplar_graph(json, file.string(), folder);

@@ -4,7 +4,7 @@
 // as wide as a texel of exemplar j; every exemplar has an implicit self-loop with r = 0; loops are allowed (a
 // self-loop with r > 0 is an infinite zoom); r < r_max so that source and destination scales overlap.
 //
-// The file (JSON; unknown keys are errors naming their path):
+// The file (JSON; unknown and duplicate keys are errors naming their path):
 //   {"exemplars": [{"id": "rock", "path": "rock.png"}, ...],   paths relative to the graph file
 //    "root": "rock",                                            the coarsest-level start of synthesis
 //    "edges": [{"source": "rock", "destination": "pebbles", "r": 2}, ...]}

@@ -3,12 +3,15 @@
 // rewritten when MICROBAKE_UPDATE_GOLDEN=1). Every failing case must print exactly one line
 // `microbake: error: ...` on stderr, and the files a case lists under "absent" must not exist afterwards
 // (no partial outputs). Placeholders: {exe} the built microbake, {tmp} this run's scratch folder, {src} the
-// source tree. "skip_under_sanitizer": true skips a case in sanitized builds. The "setup" commands at the
-// top of the file run once, before the cases.
+// source tree. Commands run in the scratch folder, so relative paths name files there: a golden that shows paths
+// or file offsets should use them, as their length would otherwise depend on the scratch folder's. "mask": a list
+// of JSON pointers into the golden output whose values are replaced by "<masked>" in both the output and the
+// golden before they are compared (for bytes that depend on library versions, e.g. a PNG encoder's hash);
+// each must exist in the output. "skip_under_sanitizer": true skips a case in sanitized builds. The "setup"
+// commands at the top of the file run once, before the cases.
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -17,20 +20,18 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tests/scratch_dir.h"
+
 namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
 const fs::path kCasesFile = fs::path(MICROBAKE_SOURCE_DIR) / "tests" / "cli" / "cases.json";
 
-fs::path scratch_dir() {
-  static const fs::path dir = [] {
-    fs::path d = fs::temp_directory_path() / ("microbake_cli_" + std::to_string(::getpid()));
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-  }();
-  return dir;
+// Created on first use, removed when the process ends.
+const fs::path& scratch_dir() {
+  static const mbk::test::ScratchDir dir("cli");
+  return dir.path();
 }
 
 std::string expand(std::string s) {
@@ -87,7 +88,6 @@ class CliEnvironment : public ::testing::Environment {
       ASSERT_EQ(r.exit_code, 0) << "setup failed: " << cmd << "\n" << r.err;
     }
   }
-  void TearDown() override { fs::remove_all(scratch_dir()); }
 };
 const auto* const kEnvironment = ::testing::AddGlobalTestEnvironment(new CliEnvironment);
 
@@ -96,6 +96,19 @@ std::string normalise(std::string s) {
   const std::string tmp = scratch_dir().string();
   for (size_t pos; (pos = s.find(tmp)) != std::string::npos;) s.replace(pos, tmp.size(), "{tmp}");
   return s;
+}
+
+// `j` with the value at each of the case's "mask" pointers replaced by "<masked>"; false when one is missing.
+bool apply_mask(const json& spec, json& j, std::string* missing) {
+  for (const auto& pointer : spec.value("mask", json::array())) {
+    const json::json_pointer at(pointer.get<std::string>());
+    if (!j.contains(at)) {
+      *missing = pointer.get<std::string>();
+      return false;
+    }
+    j[at] = "<masked>";
+  }
+  return true;
 }
 
 class CliCaseTest : public ::testing::TestWithParam<CliCase> {};
@@ -128,12 +141,15 @@ TEST_P(CliCaseTest, Behaves) {
         fs::path(MICROBAKE_SOURCE_DIR) / "tests" / "cli" / "golden" / c["stdout_golden"].get<std::string>();
     json actual = json::parse(normalise(r.out), nullptr, false);
     ASSERT_FALSE(actual.is_discarded()) << "stdout is not JSON: " << r.out;
+    std::string missing;
+    ASSERT_TRUE(apply_mask(c, actual, &missing)) << "mask " << missing << " is not in the output:\n" << r.out;
     if (const char* update = std::getenv("MICROBAKE_UPDATE_GOLDEN"); update && std::string(update) == "1") {
       std::ofstream(golden) << actual.dump(2) << "\n";
     } else {
       ASSERT_TRUE(fs::exists(golden)) << golden << " missing: run with MICROBAKE_UPDATE_GOLDEN=1 once and review it";
-      EXPECT_EQ(actual, json::parse(slurp(golden)))
-          << "differs from " << golden << " (MICROBAKE_UPDATE_GOLDEN=1 rewrites it)";
+      json expected = json::parse(slurp(golden));
+      ASSERT_TRUE(apply_mask(c, expected, &missing)) << "mask " << missing << " is not in " << golden;
+      EXPECT_EQ(actual, expected) << "differs from " << golden << " (MICROBAKE_UPDATE_GOLDEN=1 rewrites it)";
     }
   }
   for (const auto& path : c.value("absent", json::array())) {

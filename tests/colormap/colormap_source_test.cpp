@@ -11,15 +11,10 @@
 #include "libbake/colormap/colormap_source.h"
 #include "libbake/image/image_io.h"
 #include "libbake/image/srgb_transfer.h"
+#include "tests/scratch_dir.h"
 
 namespace mbk {
 namespace {
-
-std::filesystem::path temp_path(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / "microbake_colormap_source_test";
-  std::filesystem::create_directories(dir);
-  return dir / name;
-}
 
 // A 5 x 3 gradient whose middle row (1) differs from the others.
 Image gradient_image() {
@@ -35,7 +30,8 @@ Image gradient_image() {
 void write_text(const std::filesystem::path& p, const std::string& text) { std::ofstream(p) << text; }
 
 TEST(ColormapSource, SrgbPngIsDecodedToLinear_MiddleRow) {
-  const auto path = temp_path("gradient.png");
+  const test::ScratchDir dir;
+  const auto path = dir / "gradient.png";
   save_image(path, gradient_image(), {.png_bits = 16});
   const LoadedColormap m = load_colormap_source(path, ColorEncoding::automatic);
   EXPECT_EQ(m.encoding, "srgb");
@@ -56,11 +52,12 @@ TEST(ColormapSource, SrgbPngIsDecodedToLinear_MiddleRow) {
 }
 
 TEST(ColormapSource, FloatExrIsLinear_OneRow) {
+  const test::ScratchDir dir;
   Image im = gradient_image();
   im.height = 1;
   im.pixels.assign(im.pixels.begin() + 15, im.pixels.begin() + 30);  // the middle row alone
   im.at(4, 0, 0) = 3.5f;                                             // HDR survives
-  const auto path = temp_path("gradient.exr");
+  const auto path = dir / "gradient.exr";
   save_image(path, im);
   const LoadedColormap m = load_colormap_source(path, ColorEncoding::automatic);
   EXPECT_EQ(m.encoding, "linear");
@@ -69,9 +66,10 @@ TEST(ColormapSource, FloatExrIsLinear_OneRow) {
 }
 
 TEST(ColormapSource, NonFiniteGradientTexelIsAnError_NaN) {
+  const test::ScratchDir dir;
   Image im = gradient_image();
   im.at(3, 1, 2) = std::nanf("");
-  const auto path = temp_path("nan_gradient.exr");
+  const auto path = dir / "nan_gradient.exr";
   save_image(path, im);
   try {
     load_colormap_source(path, ColorEncoding::automatic);
@@ -83,7 +81,8 @@ TEST(ColormapSource, NonFiniteGradientTexelIsAnError_NaN) {
 }
 
 TEST(ColormapSource, JsonStopsWithAHardEdge) {
-  const auto path = temp_path("stops.json");
+  const test::ScratchDir dir;
+  const auto path = dir / "stops.json";
   write_text(path, R"({"encoding": "linear", "stops": [{"at": -1, "color": [0, 0, 1]}, {"at": 0.5, "color": 0.25},
                       {"at": 0.5, "color": [1, 0, 0]}, {"at": 2, "color": [4, 4, 4]}]})");
   const LoadedColormap m = load_colormap_source(path, ColorEncoding::automatic);
@@ -95,7 +94,8 @@ TEST(ColormapSource, JsonStopsWithAHardEdge) {
 }
 
 TEST(ColormapSource, JsonStopsDefaultToSrgb) {
-  const auto path = temp_path("srgb_stops.json");
+  const test::ScratchDir dir;
+  const auto path = dir / "srgb_stops.json";
   write_text(path, R"({"stops": [{"at": 0, "color": [0.5, 0.5, 0.5]}, {"at": 1, "color": [1, 1, 1]}]})");
   const LoadedColormap m = load_colormap_source(path, ColorEncoding::automatic);
   EXPECT_EQ(m.encoding, "srgb");
@@ -103,7 +103,8 @@ TEST(ColormapSource, JsonStopsDefaultToSrgb) {
 }
 
 void expect_invalid(const std::string& json, const std::string& where_part) {
-  const auto path = temp_path("bad.json");
+  const test::ScratchDir dir;
+  const auto path = dir / "bad.json";
   write_text(path, json);
   try {
     load_colormap_source(path, ColorEncoding::automatic);
@@ -124,11 +125,13 @@ TEST(ColormapSource, JsonErrorsNameTheirPath) {
   expect_invalid(R"({"stops": [{"at": 0, "color": 1.5}, {"at": 1, "color": 0}]})", "stops[0].color");
   expect_invalid(R"({"stops": [{"at": 0, "color": 1}]})", "at least two");
   expect_invalid(R"({"stops": [)", "malformed JSON");
+  expect_invalid(R"({"stops": [{"at": 0, "color": 1, "at": 0.5}, {"at": 1, "color": 0}]})", "stops[0].at");
 }
 
 TEST(ColormapSource, MissingFileIsAnIoFailure) {
+  const test::ScratchDir dir;
   try {
-    load_colormap_source(temp_path("nope.png"), ColorEncoding::automatic);
+    load_colormap_source(dir / "nope.png", ColorEncoding::automatic);
     ADD_FAILURE();
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ExitCode::io_failure);

@@ -15,6 +15,7 @@
 #include "libbake/core/parallel.h"
 #include "libbake/image/image_io.h"
 #include "tests/formats/asset_fixtures.h"
+#include "tests/scratch_dir.h"
 
 namespace mbk {
 namespace {
@@ -119,7 +120,8 @@ TEST(MomentPyramid, DriverImageWithNaNIsAnError_NaN) {
   im.width = 4, im.height = 3, im.channels = 1;
   im.pixels.assign(12, 0.25f);
   im.pixels[6] = std::nanf("");
-  const auto path = std::filesystem::temp_directory_path() / "microbake_moments_nan.exr";
+  const test::ScratchDir dir;
+  const auto path = dir / "nan.exr";
   save_image(path, im);
   try {
     load_driver(path, 0);
@@ -134,7 +136,6 @@ TEST(MomentPyramid, DriverImageWithNaNIsAnError_NaN) {
   const Driver d = load_driver(path, 0);
   EXPECT_EQ(d.values[6], 7.5);
   EXPECT_EQ(d.record["channel"], 0);
-  std::filesystem::remove(path);
 }
 
 TEST(MomentPyramid, ExactBoxMomentsOnARealHeightMap) {

@@ -78,6 +78,14 @@ TEST(JsonCurves, UnknownKeyNamesItsPath) {
       {"unknown key 'closd'", "c.json: curves[0].closd"});
 }
 
+TEST(JsonCurves, DuplicateKeyNamesItsPath) {
+  expect_error(
+      [] {
+        parse_json_curves(R"({"curves": [{"points": [[0, 0], [1, 1]], "points": [[2, 2], [3, 3]]}]})", "c.json", 8, 8);
+      },
+      {"duplicate key 'points'", "c.json: curves[0].points"});
+}
+
 TEST(JsonCurves, MalformedJson) {
   expect_error([] { parse_json_curves(R"({"curves": [)", "c.json", 8, 8); }, {"malformed JSON", "c.json"});
 }

@@ -15,12 +15,13 @@
 #include "libbake/scene/bake_plan.h"
 #include "tests/eval/render_fixtures.h"
 #include "tests/scene/scene_test_fixtures.h"
+#include "tests/scratch_dir.h"
 
 namespace mbk {
 namespace {
 
 using nlohmann::json;
-using testing::ScratchDir;
+using test::ScratchDir;
 
 // Hard-edged stripes: C is far from linear, so C(mean f) is far from E[C(f)] once f varies within a pixel.
 void write_stripes(const std::filesystem::path& path) {

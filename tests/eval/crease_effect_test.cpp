@@ -15,12 +15,13 @@
 #include "libbake/scene/asset_freshness.h"
 #include "tests/eval/render_fixtures.h"
 #include "tests/scene/scene_test_fixtures.h"
+#include "tests/scratch_dir.h"
 
 namespace mbk {
 namespace {
 
 using nlohmann::json;
-using testing::ScratchDir;
+using test::ScratchDir;
 
 // A 16 x 16 map split by the directed line (3.3, 0) -> (12.7, 16): texels whose centre lies right of it (as seen
 // on screen, y down) tilt one way, the others the other way, so interpolating across it is far off.

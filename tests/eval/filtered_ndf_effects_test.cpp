@@ -17,12 +17,13 @@
 #include "libbake/eval/renderer.h"
 #include "libbake/scene/bake_plan.h"
 #include "tests/scene/scene_test_fixtures.h"
+#include "tests/scratch_dir.h"
 
 namespace mbk {
 namespace {
 
 using nlohmann::json;
-using testing::ScratchDir;
+using test::ScratchDir;
 
 // One plane (material "m" with the given effect) seen by a camera; a point light, a directional light, a sky.
 json plane_scene(const json& effect, const json& specular, const json& camera, const json& plane,

@@ -14,14 +14,15 @@
 #include "libbake/scene/bake_plan.h"
 #include "tests/eval/render_fixtures.h"
 #include "tests/scene/scene_test_fixtures.h"
+#include "tests/scratch_dir.h"
 
 namespace mbk {
 namespace {
 
 using nlohmann::json;
+using test::ScratchDir;
 using testing::bake_scene;
 using testing::render;
-using testing::ScratchDir;
 
 json glint_material(const std::string& map, const json& effect) {
   return {{"albedo", {0.05, 0.05, 0.05}},

@@ -17,14 +17,15 @@
 #include "libbake/scene/bake_plan.h"
 #include "tests/eval/render_fixtures.h"
 #include "tests/scene/scene_test_fixtures.h"
+#include "tests/scratch_dir.h"
 
 namespace mbk {
 namespace {
 
 using nlohmann::json;
+using test::ScratchDir;
 using testing::bake_scene;
 using testing::render;
-using testing::ScratchDir;
 
 json material(const std::string& map, const std::vector<std::string>& effects, double roughness = 0.3) {
   json m = {{"albedo", {0.6, 0.5, 0.4}}, {"specular", {{"roughness", roughness}, {"f0", 0.04}}}, {"effects", effects}};

@@ -1,18 +1,20 @@
 // Test fixtures for the container: a small valid `mip` asset built by hand (its levels computed by brute
 // force over the area each texel covers, independently of the baker), and readable helpers that corrupt one field of a
-// valid file and, where a test wants a deeper check to fire, reseal the checksums around it.
+// valid file and, where a test wants a deeper check to fire, reseal the checksums around it (reseal.h).
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <vector>
 
 #include "formats/asset_writer.h"
 #include "formats/byte_io.h"
 #include "formats/container_layout.h"
 #include "formats/mip_levels.h"
+#include "tests/formats/reseal.h"
 
 namespace mbk::test {
 
@@ -72,11 +74,16 @@ inline nlohmann::json mip_metadata(uint32_t w, uint32_t h, size_t levels) {
           {"statistics", nlohmann::json::object()}};
 }
 
-inline AssetWriter mip_writer(uint32_t w, uint32_t h) {
+// The W x H fixture; for corrupt variants, without its last `dropped` levels and with parameters[key] = value
+// when a key is given (written, not patched, so the metadata may grow).
+inline AssetWriter mip_writer(uint32_t w, uint32_t h, size_t dropped = 0, const std::string& key = "",
+                              const nlohmann::json& value = nullptr) {
   auto levels = brute_force_pyramid(unit_normals(w, h), w, h);
   auto sizes = mip_level_sizes(w, h);
-  AssetWriter writer("mip", mip_metadata(w, h, levels.size()));
-  for (size_t k = 0; k < levels.size(); ++k)
+  nlohmann::json metadata = mip_metadata(w, h, levels.size());
+  if (!key.empty()) metadata["parameters"][key] = value;
+  AssetWriter writer("mip", metadata);
+  for (size_t k = 0; k + dropped < levels.size(); ++k)
     writer.add<float>("level_" + std::to_string(k), {sizes[k].height, sizes[k].width, 3}, levels[k]);
   return writer;
 }
@@ -90,17 +97,6 @@ inline uint64_t entry_offset(const std::vector<uint8_t>& f, size_t i) {
 }
 inline uint64_t section_data_offset(const std::vector<uint8_t>& f, size_t i) {
   return load_le<uint64_t>(&f[entry_offset(f, i) + 88]);
-}
-
-// Recomputes the header checksum, so that checks after it see the change.
-inline void reseal_header(std::vector<uint8_t>& f) {
-  uint64_t meta_off = load_le<uint64_t>(&f[24]), meta_size = load_le<uint64_t>(&f[32]);
-  uint64_t table_off = load_le<uint64_t>(&f[40]);
-  uint64_t table_size = uint64_t(load_le<uint32_t>(&f[48])) * load_le<uint32_t>(&f[52]);
-  std::vector<uint8_t> covered(f.begin(), f.begin() + kChecksummedHeaderBytes);
-  covered.insert(covered.end(), f.begin() + meta_off, f.begin() + meta_off + meta_size);
-  covered.insert(covered.end(), f.begin() + table_off, f.begin() + table_off + table_size);
-  store_le<uint64_t>(&f[56], checksum_of(covered.data(), covered.size()));
 }
 
 // Recomputes section i's checksum after its data changed, then the header's.
@@ -128,14 +124,25 @@ inline std::vector<uint8_t> with_f32_element(std::vector<uint8_t> f, size_t sect
   return f;
 }
 
+// `f` with `edit` applied to its metadata "parameters" (no longer than before), resealed.
+inline std::vector<uint8_t> with_parameters_edited(std::vector<uint8_t> f,
+                                                   const std::function<void(nlohmann::json&)>& edit) {
+  const uint64_t meta_off = load_le<uint64_t>(&f[24]), meta_size = load_le<uint64_t>(&f[32]);
+  nlohmann::json m = nlohmann::json::parse(std::string(f.begin() + meta_off, f.begin() + meta_off + meta_size));
+  edit(m["parameters"]);
+  replace_metadata(f, m.dump());
+  return f;
+}
+
 // `f` with metadata parameters[key] replaced (no longer than before), resealed.
 inline std::vector<uint8_t> with_parameter(std::vector<uint8_t> f, const std::string& key,
                                            const nlohmann::json& value) {
-  const uint64_t meta_off = load_le<uint64_t>(&f[24]), meta_size = load_le<uint64_t>(&f[32]);
-  nlohmann::json m = nlohmann::json::parse(std::string(f.begin() + meta_off, f.begin() + meta_off + meta_size));
-  m["parameters"][key] = value;
-  replace_metadata(f, m.dump());
-  return f;
+  return with_parameters_edited(std::move(f), [&](nlohmann::json& p) { p[key] = value; });
+}
+
+// `f` without metadata parameters[key], resealed.
+inline std::vector<uint8_t> without_parameter(std::vector<uint8_t> f, const std::string& key) {
+  return with_parameters_edited(std::move(f), [&](nlohmann::json& p) { p.erase(key); });
 }
 
 inline float get_f32(const std::vector<uint8_t>& f, uint64_t off) { return load_le<float>(&f[off]); }

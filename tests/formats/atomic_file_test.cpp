@@ -8,6 +8,7 @@
 #include "formats/atomic_file.h"
 #include "formats/error.h"
 #include "tests/formats/asset_fixtures.h"
+#include "tests/scratch_dir.h"
 
 namespace mbk {
 namespace {
@@ -15,15 +16,9 @@ namespace fs = std::filesystem;
 
 class AtomicFileTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("mbk_atomic_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   size_t entries() const { return size_t(std::distance(fs::directory_iterator(dir_), fs::directory_iterator())); }
-  fs::path dir_;
+  test::ScratchDir scratch_;
+  const fs::path dir_ = scratch_.path();
 };
 
 TEST_F(AtomicFileTest, CommitRenamesIntoPlaceWithSameExtension) {

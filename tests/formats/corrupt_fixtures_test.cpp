@@ -45,15 +45,6 @@ uint64_t first_padding_byte(const Bytes& f) {
   return end0;  // level_0 is 180 bytes, the next section starts at the next multiple of 64
 }
 
-Bytes without_last_level() {
-  auto sizes = mip_level_sizes(5, 3);
-  auto levels = test::brute_force_pyramid(test::unit_normals(5, 3), 5, 3);
-  AssetWriter w("mip", test::mip_metadata(5, 3, levels.size()));
-  for (size_t k = 0; k + 1 < levels.size(); ++k)
-    w.add<float>("level_" + std::to_string(k), {sizes[k].height, sizes[k].width, 3}, levels[k]);
-  return w.serialize();
-}
-
 Bytes with_level_texel(size_t level, size_t texel, std::function<void(float*)> change) {
   Bytes f = test::valid_mip_bytes();
   if ((texel + 1) * 12 > load_le<uint64_t>(&f[entry_offset(f, level) + 96]))
@@ -296,7 +287,7 @@ std::vector<CorruptCase> corrupt_cases() {
          return w.serialize();
        }},
       {"MipNonFinite", 11001, [&] { return with_level_texel(1, 1, [](float* v) { v[1] = std::nanf(""); }); }},
-      {"MipLevelMissing", 11002, [&] { return without_last_level(); }},
+      {"MipLevelMissing", 11002, [] { return test::mip_writer(5, 3, 1).serialize(); }},
       {"MipLongerThanOne", 11003,
        [&] {
          return with_level_texel(1, 0, [](float* v) {
@@ -312,14 +303,14 @@ std::vector<CorruptCase> corrupt_cases() {
          });
        }},
       {"MipParentNotMean", 11005, [&] { return with_level_texel(1, 1, [](float* v) { v[0] *= 0.95f; }); }},
-      {"MipBadParameters", 11006,
-       [&] {
-         Bytes f = valid();
-         auto m = meta_text(f);
-         m["parameters"].erase("width");
-         test::replace_metadata(f, m.dump());
-         return f;
-       }},
+      {"MipWidthMissing", 11006, [&] { return test::without_parameter(valid(), "width"); }},
+      {"MipNegativeWidth", 11006, [] { return test::mip_writer(5, 3, 0, "width", -5).serialize(); }},
+      {"MipWidthAbove32Bits", 11006,  // was read as 5, which made it valid
+       [] { return test::mip_writer(5, 3, 0, "width", (uint64_t(1) << 32) + 5).serialize(); }},
+      {"MipWidthNotAnInteger", 11006, [] { return test::mip_writer(5, 3, 0, "width", 5.0).serialize(); }},
+      {"MipHeightAString", 11006, [] { return test::mip_writer(5, 3, 0, "height", "3").serialize(); }},
+      {"MipLevelsMissing", 11006, [&] { return test::without_parameter(valid(), "levels"); }},
+      {"MipLevelsDisagree", 11006, [] { return test::mip_writer(5, 3, 0, "levels", 2).serialize(); }},
       {"LutNonFinite", 12001, [] { return test::lut_with_value(2, 1, std::nanf("")); }},
       {"LutSizeOutOfRange", 12002, [] { return test::lut_with_size(1); }},
       {"LutShapeDisagreesWithSize", 12003, [] { return test::lut_with_size(6); }},
@@ -442,7 +433,8 @@ TEST(ValidationMessages, IdsUniqueAndGroupedByThousand) {
 }
 
 TEST(ValidationMessages, EveryIdHasAFixture) {
-  std::set<int> covered;
+  // Findings about a file rather than its bytes have a CLI case instead (tests/cli/cases.json).
+  std::set<int> covered = {msg::file_unreadable.id};  // ValidateMissingFileJson, ValidateFolderJson
   for (const auto& c : corrupt_cases()) covered.insert(c.expected_id);
   for (const auto& m : all_messages()) EXPECT_TRUE(covered.count(m.id)) << "no corrupt fixture for id " << m.id;
 }

@@ -6,15 +6,15 @@
 #include "libbake/gen/generator.h"
 #include "libbake/image/image_io.h"
 #include "libbake/image/normal_map.h"
-#include "tests/image/temp_folder.h"
+#include "tests/image/cli_run.h"
 
 namespace mbk {
 namespace {
 
-std::string out(const test::TempFolder& dir, const std::string& name) { return " -o " + (dir / name).string(); }
+std::string out(const test::ScratchDir& dir, const std::string& name) { return " -o " + (dir / name).string(); }
 
 TEST(GenCommand, SameSeedGivesByteIdenticalFilesWhateverTheThreadCount) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   for (const GeneratorKind& k : generator_kinds())
     for (const char* ext : {".png", ".exr"}) {
       const std::string kind(k.name), a = kind + "_a" + ext, b = kind + "_b" + ext, c = kind + "_c" + ext;
@@ -27,7 +27,7 @@ TEST(GenCommand, SameSeedGivesByteIdenticalFilesWhateverTheThreadCount) {
 }
 
 TEST(GenCommand, WritesTheRequestedSizeAndEncoding) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   auto r = test::run_cli("gen leather --size 300x120" + out(dir, "l.png"), dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("300x120"), std::string::npos);
@@ -57,7 +57,7 @@ TEST(GenCommand, WritesTheRequestedSizeAndEncoding) {
 }
 
 TEST(GenCommand, BadCommandLinesExitOneAndWriteNothing) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   auto r = test::run_cli("gen marble" + out(dir, "x.png"), dir);
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("bumps, brushed, scratches, flakes, leather, panels"), std::string::npos) << r.err;
@@ -74,7 +74,7 @@ TEST(GenCommand, BadCommandLinesExitOneAndWriteNothing) {
 }
 
 TEST(GenCommand, HelpListsKindsAndOptions) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   const auto r = test::run_cli("gen --help", dir);
   EXPECT_EQ(r.exit_code, 0);
   for (const char* s : {"bumps", "panels", "--size", "--seed", "--threads", "-o"})

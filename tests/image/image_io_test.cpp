@@ -10,7 +10,7 @@
 
 #include "formats/error.h"
 #include "libbake/image/image_io.h"
-#include "tests/image/temp_folder.h"
+#include "tests/image/cli_run.h"
 
 namespace mbk {
 namespace {
@@ -33,7 +33,7 @@ ExitCode code_of(const std::function<void()>& f) {
 }
 
 TEST(ImageIo, Png8BitStoresCodesExactly) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   const Image im = coded_image(7, 5, 3, 255.0);
   save_image(dir / "a.png", im, {.png_bits = 8});
   ImageFileInfo info;
@@ -46,7 +46,7 @@ TEST(ImageIo, Png8BitStoresCodesExactly) {
 }
 
 TEST(ImageIo, Png16BitStoresCodesExactly) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   const Image im = coded_image(3, 4, 3, 65535.0);
   save_image(dir / "a.png", im, {.png_bits = 16});
   ImageFileInfo info;
@@ -57,7 +57,7 @@ TEST(ImageIo, Png16BitStoresCodesExactly) {
 }
 
 TEST(ImageIo, PngRoundsToNearestCodeClampsAndZeroesNaN) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   const Image im{5, 1, 1, {0.5f / 255.0f + 1e-4f, 0.5f / 255.0f - 1e-4f, -3.0f, 7.0f, NAN}};
   save_image(dir / "a.png", im, {.png_bits = 8});
   const Image back = load_image(dir / "a.png");
@@ -69,7 +69,7 @@ TEST(ImageIo, PngRoundsToNearestCodeClampsAndZeroesNaN) {
 }
 
 TEST(ImageIo, ExrFloatKeepsValuesBitExact) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   const Image im{3, 2, 3, {-1.0f, 0.123456789f, 1e-30f, 3.5f, -0.7071f, 42.0f, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}};
   save_image(dir / "a.exr", im, {.float_bits = 32});
   ImageFileInfo info;
@@ -80,7 +80,7 @@ TEST(ImageIo, ExrFloatKeepsValuesBitExact) {
 }
 
 TEST(ImageIo, ExrHalfRoundsToNearestHalf) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   const Image im{2, 2, 3, {-1.0f, 0.1f, 0.3333f, 0.9f, -0.25f, 1e-3f, 0.5f, 0.6f, 0.7f, -0.8f, 0.05f, 0.999f}};
   save_image(dir / "a.exr", im, {.float_bits = 16});
   ImageFileInfo info;
@@ -90,7 +90,7 @@ TEST(ImageIo, ExrHalfRoundsToNearestHalf) {
 }
 
 TEST(ImageIo, FormatPathChoosesTheFormat) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   // A temporary name whose extension says nothing; the destination's extension picks PNG.
   save_image(dir / "out.partial", coded_image(2, 2, 3, 255.0), {.png_bits = 8}, dir / "final.png");
   const auto bytes = test::file_bytes(dir / "out.partial");
@@ -104,7 +104,7 @@ TEST(ImageIo, FormatPathChoosesTheFormat) {
 }
 
 TEST(ImageIo, SameImageGivesByteIdenticalFiles) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   const Image im = coded_image(9, 7, 3, 65535.0);
   for (const char* ext : {".png", ".exr", ".tif"}) save_image(dir / (std::string("a") + ext), im);
   // Across a clock-second boundary, so that a time stamp in the file would show.
@@ -117,7 +117,7 @@ TEST(ImageIo, SameImageGivesByteIdenticalFiles) {
 }
 
 TEST(ImageIo, ErrorsCarryTheDocumentedExitCodes) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   EXPECT_EQ(code_of([&] { load_image(dir / "absent.png"); }), ExitCode::io_failure);
   EXPECT_EQ(code_of([&] { load_image(dir.path()); }), ExitCode::io_failure);
   std::ofstream(dir / "text.png") << "not an image at all";
@@ -130,7 +130,7 @@ TEST(ImageIo, ErrorsCarryTheDocumentedExitCodes) {
 }
 
 TEST(ImageIo, HeaderReportsSizeWithoutPixels) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   save_image(dir / "a.png", coded_image(13, 6, 4, 255.0), {.png_bits = 8});
   const ImageHeader h = read_image_header(dir / "a.png");
   EXPECT_EQ(h.width, 13u);

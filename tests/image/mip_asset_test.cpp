@@ -10,7 +10,7 @@
 #include "libbake/image/image_io.h"
 #include "libbake/image/mip_asset.h"
 #include "libbake/image/normal_map_encoding.h"
-#include "tests/image/temp_folder.h"
+#include "tests/image/cli_run.h"
 
 namespace mbk {
 namespace {
@@ -62,7 +62,7 @@ INSTANTIATE_TEST_SUITE_P(OddAndDegenerate, MipAssetSizes,
                                            std::pair{100u, 37u}));
 
 TEST(MipAsset, CliWritesAValidAssetRecordingTheInput) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   save_normal_map(dir / "in.png", generate_panels({48, 40}, 2, Progress::silent()), YConvention::minus_y);
   const auto run =
       test::run_cli("mip " + (dir / "in.png").string() + " --convention -Y -o " + (dir / "out.mbk").string(), dir);
@@ -86,7 +86,7 @@ TEST(MipAsset, CliWritesAValidAssetRecordingTheInput) {
 }
 
 TEST(MipAsset, CliIsDeterministicAcrossThreadCounts) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   save_normal_map(dir / "in.png", generate_leather({67, 45}, 4, Progress::silent()));
   ASSERT_EQ(
       test::run_cli("mip " + (dir / "in.png").string() + " --threads 1 -o " + (dir / "a.mbk").string(), dir).exit_code,
@@ -98,7 +98,7 @@ TEST(MipAsset, CliIsDeterministicAcrossThreadCounts) {
 }
 
 TEST(MipAsset, CliErrorsLeaveNoOutput) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   const std::string out = (dir / "out.mbk").string();
   auto r = test::run_cli("mip " + (dir / "absent.png").string() + " -o " + out, dir);
   EXPECT_EQ(r.exit_code, 2);

@@ -12,7 +12,7 @@
 #include "libbake/image/image_io.h"
 #include "libbake/image/normal_map.h"
 #include "libbake/image/normal_map_encoding.h"
-#include "tests/image/temp_folder.h"
+#include "tests/image/cli_run.h"
 
 namespace mbk {
 namespace {
@@ -49,7 +49,7 @@ LoadedNormalMap load(const std::filesystem::path& p, YConvention c = YConvention
 }
 
 TEST(NormalMapDecode, Png8BitMapsCodesTo2vMinus1) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   save_image(dir / "n.png", code_image(), {.png_bits = 8});
   const LoadedNormalMap m = load(dir / "n.png");
   EXPECT_EQ(m.record.pixel_format, "uint8");
@@ -58,7 +58,7 @@ TEST(NormalMapDecode, Png8BitMapsCodesTo2vMinus1) {
 }
 
 TEST(NormalMapDecode, Png16BitMapsCodesTo2vMinus1) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   // 16-bit codes 257 * c8 plus an offset that only 16 bits can hold.
   Image im{4, 3, 3, {}};
   std::vector<Vec3f> expected;
@@ -79,7 +79,7 @@ TEST(NormalMapDecode, Png16BitMapsCodesTo2vMinus1) {
 }
 
 TEST(NormalMapDecode, ExrFloatIsTakenAsTheVector) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   Image im{4, 3, 3, {}};
   std::vector<Vec3f> expected;
   for (size_t i = 0; i < 12; ++i) {
@@ -95,7 +95,7 @@ TEST(NormalMapDecode, ExrFloatIsTakenAsTheVector) {
 }
 
 TEST(NormalMapDecode, ExrHalfIsTakenAsTheVector) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   Image im{4, 3, 3, {}};
   std::vector<Vec3f> expected;
   for (size_t i = 0; i < 12; ++i) {
@@ -112,7 +112,7 @@ TEST(NormalMapDecode, ExrHalfIsTakenAsTheVector) {
 }
 
 TEST(NormalMapDecode, TgaMapsCodesTo2vMinus1) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   save_image(dir / "n.tga", code_image(), {.png_bits = 8});
   const LoadedNormalMap m = load(dir / "n.tga");
   EXPECT_EQ(m.record.pixel_format, "uint8");
@@ -121,7 +121,7 @@ TEST(NormalMapDecode, TgaMapsCodesTo2vMinus1) {
 }
 
 TEST(NormalMapDecode, Tiff8And16BitMapCodesTo2vMinus1) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   save_image(dir / "n8.tif", code_image(), {.png_bits = 8});
   save_image(dir / "n16.tif", code_image(), {.png_bits = 16});  // 8-bit codes are exact 16-bit codes (x 257)
   const LoadedNormalMap m8 = load(dir / "n8.tif"), m16 = load(dir / "n16.tif");
@@ -143,7 +143,7 @@ void write_tiff(const std::filesystem::path& p, OIIO::TypeDesc type, const std::
 }
 
 TEST(NormalMapDecode, FloatTiffIsTakenAsTheVector) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   write_tiff(dir / "n.tif", OIIO::TypeDesc::FLOAT, {-0.5f, 0.25f, 1.0f, 0.1f, 0.2f, 0.3f});
   const LoadedNormalMap m = load(dir / "n.tif");
   EXPECT_EQ(m.record.pixel_format, "float");
@@ -152,7 +152,7 @@ TEST(NormalMapDecode, FloatTiffIsTakenAsTheVector) {
 }
 
 TEST(NormalMapDecode, SignedIntegerTiffIsTakenAsTheVector) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   write_tiff(dir / "n.tif", OIIO::TypeDesc::INT16, {-0.5f, 0.25f, 1.0f});
   const LoadedNormalMap m = load(dir / "n.tif");
   EXPECT_EQ(m.record.pixel_format, "int16");
@@ -160,7 +160,7 @@ TEST(NormalMapDecode, SignedIntegerTiffIsTakenAsTheVector) {
 }
 
 TEST(NormalMapDecode, JpegDecodesWithinCompressionError) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   // Flat 8 x 8 blocks of one colour survive JPEG's DCT almost exactly; chroma subsampling of a
   // uniform block changes nothing. Allow 2 codes of error per channel.
   Image im{16, 8, 3, {}};
@@ -178,7 +178,7 @@ TEST(NormalMapDecode, JpegDecodesWithinCompressionError) {
 }
 
 TEST(NormalMapDecode, MinusYFlipsGreenOnly) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   save_image(dir / "n.png", code_image(), {.png_bits = 8});
   const LoadedNormalMap plus = load(dir / "n.png", YConvention::plus_y),
                         minus = load(dir / "n.png", YConvention::minus_y);
@@ -194,7 +194,7 @@ TEST(NormalMapDecode, MinusYFlipsGreenOnly) {
 }
 
 TEST(NormalMapDecode, SavedMapsLoadBackInTheirConvention) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   save_image(dir / "n.png", code_image(), {.png_bits = 8});
   const NormalMap original = load(dir / "n.png").map;
   for (YConvention c : {YConvention::plus_y, YConvention::minus_y})
@@ -208,7 +208,7 @@ TEST(NormalMapDecode, SavedMapsLoadBackInTheirConvention) {
 }
 
 TEST(NormalMapDecode, TwoChannelFloatRebuildsZ) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   const Image im{3, 1, 2, {0.6f, 0.0f, -0.3f, 0.4f, 0.8f, 0.8f}};  // last one lies outside the unit disk
   save_image(dir / "xy.exr", im, {.float_bits = 32});
   const LoadedNormalMap m = load(dir / "xy.exr");
@@ -221,7 +221,7 @@ TEST(NormalMapDecode, TwoChannelFloatRebuildsZ) {
 }
 
 TEST(NormalMapDecode, TwoChannelPngRebuildsZFromUnsignedCodes) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   // A two-channel PNG is stored as grey + alpha: the second channel must not be treated as coverage.
   const Image im{2, 1, 2, {float(200 / 255.0), float(90 / 255.0), 0.5f, 0.5f}};
   save_image(dir / "xy.png", im, {.png_bits = 8});
@@ -233,7 +233,7 @@ TEST(NormalMapDecode, TwoChannelPngRebuildsZFromUnsignedCodes) {
 }
 
 TEST(NormalMapDecode, AlphaDoesNotScaleNormals) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   Image im = code_image(4);  // alpha 0.25 everywhere
   im.pixels[3] = 0.0f;       // and one fully transparent texel
   save_image(dir / "rgba.png", im, {.png_bits = 8});
@@ -248,7 +248,7 @@ TEST(NormalMapDecode, AlphaDoesNotScaleNormals) {
 }
 
 TEST(NormalMapDecode, RowZeroIsTheTopRowAndNonSquareSizesWork) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   Image im{7, 3, 3, std::vector<float>(63, 0.5f)};
   for (size_t i = 2; i < 63; i += 3) im.pixels[i] = 1.0f;
   im.at(6, 0, 0) = 1.0f;  // top-right texel tilts to +x
@@ -263,7 +263,7 @@ TEST(NormalMapDecode, RowZeroIsTheTopRowAndNonSquareSizesWork) {
 }
 
 TEST(NormalMapDecode, OneByOneMapLoads) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   save_image(dir / "n.png", Image{1, 1, 3, {0.75f, 0.5f, 0.9f}}, {.png_bits = 16});
   const LoadedNormalMap m = load(dir / "n.png");
   ASSERT_EQ(m.map.texels.size(), 1u);

@@ -9,7 +9,7 @@
 #include "formats/error.h"
 #include "libbake/image/image_io.h"
 #include "libbake/image/normal_map.h"
-#include "tests/image/temp_folder.h"
+#include "tests/image/cli_run.h"
 
 namespace mbk {
 namespace {
@@ -40,7 +40,7 @@ Image invalid_float_map() {
 }
 
 TEST(NormalMapInput, InvalidTexelsErrorNamesCountAndFirstPosition) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   save_image(dir / "bad.exr", invalid_float_map());
   const Error e = load_error(dir / "bad.exr");
   EXPECT_EQ(e.code(), ExitCode::invalid_input);
@@ -52,7 +52,7 @@ TEST(NormalMapInput, InvalidTexelsErrorNamesCountAndFirstPosition) {
 }
 
 TEST(NormalMapInput, FirstInvalidTexelReasonIsReported) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   Image im{2, 2, 3, {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 0}};  // zero vector at (1, 1)
   save_image(dir / "zero.exr", im);
   const std::string what = load_error(dir / "zero.exr").what();
@@ -64,7 +64,7 @@ TEST(NormalMapInput, FirstInvalidTexelReasonIsReported) {
 }
 
 TEST(NormalMapInput, RepairPolicyFixesAndCountsInvalidTexels) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   save_image(dir / "bad.exr", invalid_float_map());
   const LoadedNormalMap m = load_normal_map(dir / "bad.exr", kRepair);
   EXPECT_EQ(m.record.repaired_texels, 3u);
@@ -77,20 +77,20 @@ TEST(NormalMapInput, RepairPolicyFixesAndCountsInvalidTexels) {
 }
 
 TEST(NormalMapInput, RepairOfStraightDownGivesUp) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   save_image(dir / "down.exr", Image{1, 1, 3, {0, 0, -1}});
   EXPECT_EQ(load_normal_map(dir / "down.exr", kRepair).map.texels[0], Vec3f(0, 0, 1));  // horizon of (0,0,-1) is zero
 }
 
 TEST(NormalMapInput, ValidMapRecordsNoRepairs) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   save_image(dir / "ok.exr", Image{1, 1, 3, {0.1f, 0.2f, 0.9f}});
   EXPECT_EQ(load_normal_map(dir / "ok.exr", kRepair).record.repaired_texels, 0u);
   EXPECT_EQ(load_normal_map(dir / "ok.exr", kStrict).record.invalid_policy, "error");
 }
 
 TEST(NormalMapInput, IntegerHorizonCodeIsNotInvalid) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   // Blue 127 decodes to z = -1/255: the horizon rounded down, accepted as z = 0. Blue 126 is below it.
   save_image(dir / "h127.png", Image{1, 1, 3, {1.0f, float(128 / 255.0), float(127 / 255.0)}}, {.png_bits = 8});
   const LoadedNormalMap m = load_normal_map(dir / "h127.png", kStrict);
@@ -107,7 +107,7 @@ TEST(NormalMapInput, IntegerHorizonCodeIsNotInvalid) {
 }
 
 TEST(NormalMapInput, OneChannelImageIsCalledAHeightMap) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   save_image(dir / "height.png", Image{2, 2, 1, {0.1f, 0.2f, 0.3f, 0.4f}}, {.png_bits = 8});
   const Error e = load_error(dir / "height.png");
   EXPECT_EQ(e.code(), ExitCode::invalid_input);
@@ -115,7 +115,7 @@ TEST(NormalMapInput, OneChannelImageIsCalledAHeightMap) {
 }
 
 TEST(NormalMapInput, SizeLimitIsEnforcedBeforeDecoding) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   Image wide{kMaxNormalMapSide + 1, 1, 3, std::vector<float>(size_t(kMaxNormalMapSide + 1) * 3, 0.5f)};
   save_image(dir / "wide.png", wide, {.png_bits = 8});
   const Error e = load_error(dir / "wide.png");
@@ -130,14 +130,14 @@ TEST(NormalMapInput, SizeLimitIsEnforcedBeforeDecoding) {
 }
 
 TEST(NormalMapInput, FileErrorsHaveTheirExitCodes) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   EXPECT_EQ(load_error(dir / "absent.png").code(), ExitCode::io_failure);
   std::ofstream(dir / "text.png") << "hello";
   EXPECT_EQ(load_error(dir / "text.png").code(), ExitCode::invalid_input);
 }
 
 TEST(NormalMapInput, RecordDescribesTheInput) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   save_image(dir / "n.png", Image{3, 2, 4, std::vector<float>(24, 0.75f)}, {.png_bits = 16});
   const LoadedNormalMap m = load_normal_map(dir / "n.png", {YConvention::minus_y, InvalidTexelPolicy::error});
   const InputRecord& r = m.record;
@@ -157,7 +157,7 @@ TEST(NormalMapInput, RecordDescribesTheInput) {
 }
 
 TEST(NormalMapInput, ContentHashIsXxh3OfTheFileBytes) {
-  test::TempFolder dir;
+  test::ScratchDir dir;
   std::ofstream(dir / "empty.bin").close();
   // XXH3-64 of no bytes (seed 0) is the published constant 2D06800538D394C2.
   EXPECT_EQ(file_content_hash(dir / "empty.bin"), "xxh3:2d06800538d394c2");

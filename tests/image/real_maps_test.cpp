@@ -11,7 +11,7 @@
 #include "libbake/image/image_io.h"
 #include "libbake/image/normal_map.h"
 #include "tests/image/slope_curl.h"
-#include "tests/image/temp_folder.h"
+#include "tests/image/cli_run.h"
 
 namespace mbk {
 namespace {
@@ -105,7 +105,7 @@ TEST(RealMaps, MinusYOptionMakesDirectXMapsIntegrable) {
 TEST(RealMaps, CliBakesAValidMipAssetFromEachMap) {
   const auto files = real_images();
   if (files.empty()) GTEST_SKIP() << "no real maps in " << kRealDir;
-  test::TempFolder dir;
+  test::ScratchDir dir;
   for (const auto& p : files) {
     const auto asset = dir / (p.stem().string() + ".mbk");
     const auto r = test::run_cli("mip '" + p.string() + "' --convention -Y -q -o '" + asset.string() + "'", dir);

@@ -12,12 +12,13 @@
 #include "libbake/scene/asset_freshness.h"
 #include "libbake/scene/bake_plan.h"
 #include "tests/scene/scene_test_fixtures.h"
+#include "tests/scratch_dir.h"
 
 namespace mbk {
 namespace {
 
 using nlohmann::json;
-using testing::ScratchDir;
+using test::ScratchDir;
 
 json map_material(const std::string& path, const std::vector<std::string>& effects,
                   const std::string& convention = "+Y") {

@@ -5,10 +5,12 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <limits>
 
 #include "formats/error.h"
 #include "libbake/scene/json_fields.h"
 #include "libbake/scene/scene.h"
+#include "tests/scratch_dir.h"
 
 namespace mbk {
 namespace {
@@ -210,6 +212,64 @@ TEST(SceneFile, RejectsWrongTypesAndRangesWithTheirPaths) {
   }
 }
 
+// parse_json_strict on `text`: the Error it throws, or a failure when it accepts.
+Error strict_parse_error(const std::string& text) {
+  try {
+    parse_json_strict(text, "s.json");
+  } catch (const Error& e) {
+    return e;
+  }
+  ADD_FAILURE() << "accepted: " << text;
+  return Error(ExitCode::success, "");
+}
+
+TEST(SceneFile, DuplicateKeysAreRefusedWithTheirJsonPath) {
+  struct Case {
+    std::string text, where;
+  };
+  const std::vector<Case> cases = {
+      {R"({"camera": {}, "camera": {}})", "s.json: camera"},
+      {R"({"materials": {"brick": {"specular": {"roughness": 0.3, "roughness": 0.5}}}})",
+       "s.json: materials.brick.specular.roughness"},
+      {R"({"shapes": [{"type": "plane"}, {"radius": 1, "type": "sphere", "radius": 2}]})", "s.json: shapes[1].radius"},
+      {R"({"a": [[1, 2], [3, {"k": 1, "k": 2}]]})", "s.json: a[1][1].k"},
+  };
+  for (const Case& c : cases) {
+    const Error e = strict_parse_error(c.text);
+    EXPECT_EQ(e.code(), ExitCode::invalid_input) << c.text;
+    EXPECT_EQ(e.where(), c.where) << c.text;
+    EXPECT_NE(std::string(e.what()).find("duplicate key"), std::string::npos) << e.what();
+  }
+  // The same key in different objects, or the same value twice, is fine.
+  EXPECT_NO_THROW(parse_json_strict(R"({"a": {"k": 1}, "b": {"k": 1}, "c": [{"k": 1}, {"k": 1}]})", "s.json"));
+}
+
+TEST(SceneFile, DuplicateKeyInASceneFileNamesTheFileAndPath) {
+  const test::ScratchDir dir;
+  std::string text = full_scene().dump();
+  text.insert(text.find("\"fov_y\""), "\"width\": 64, ");  // camera.width twice
+  std::ofstream(dir / "dup.json") << text;
+  try {
+    load_scene(dir / "dup.json");
+    ADD_FAILURE() << "accepted a duplicate key";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::invalid_input);
+    EXPECT_EQ(e.where(), (dir / "dup.json").string() + ": camera.width");
+  }
+}
+
+TEST(SceneFile, IntegerErrorsShowTheValueAndNeverWrap) {
+  json j = full_scene();
+  j["camera"]["width"] = 2.5;
+  EXPECT_NE(std::string(parse_error(j).what()).find("expected an integer, found number 2.5"), std::string::npos);
+  j["camera"]["width"] = "32";
+  EXPECT_NE(std::string(parse_error(j).what()).find("found string \"32\""), std::string::npos);
+  // Above INT64_MAX: read as int64_t it used to wrap to -1 ("value -1 is outside").
+  j["camera"]["width"] = std::numeric_limits<uint64_t>::max();
+  const std::string what = parse_error(j).what();
+  EXPECT_NE(what.find("value 18446744073709551615 is outside"), std::string::npos) << what;
+}
+
 TEST(SceneFile, MissingRequiredKeysAreNamed) {
   for (const char* pointer : {"/camera", "/shapes", "/materials", "/lights", "/camera/width", "/shapes/1/radius",
                               "/shapes/0/material", "/materials/brick/normal_map/path", "/lights/3/radiance"}) {
@@ -223,8 +283,8 @@ TEST(SceneFile, MissingRequiredKeysAreNamed) {
 }
 
 TEST(SceneFile, PathsAreRelativeToTheSceneFolder) {
-  const fs::path dir = fs::temp_directory_path() /
-                       ("mbk_scene_paths_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+  const test::ScratchDir scratch;
+  const fs::path& dir = scratch.path();
   fs::create_directories(dir / "scenes");
   json j = full_scene();
   j["materials"]["brick"]["normal_map"]["path"] = "../maps/brick.png";
@@ -235,12 +295,10 @@ TEST(SceneFile, PathsAreRelativeToTheSceneFolder) {
   EXPECT_EQ(s.materials.at("brick").normal_map->path_as_written, "../maps/brick.png");
   EXPECT_EQ(s.lights.environments[0].path, fs::path("/absolute/sky.exr"));
   EXPECT_EQ(s.folder, dir / "scenes");
-  fs::remove_all(dir);
 }
 
 TEST(SceneFile, FileErrorsCarryTheFileAndJsonPath) {
-  const fs::path dir = fs::temp_directory_path() / "mbk_scene_file_errors";
-  fs::create_directories(dir);
+  const test::ScratchDir dir;
   try {
     load_scene(dir / "absent.json");
     ADD_FAILURE();
@@ -272,7 +330,6 @@ TEST(SceneFile, FileErrorsCarryTheFileAndJsonPath) {
     EXPECT_EQ(e.code(), ExitCode::invalid_input);
     EXPECT_NE(std::string(e.what()).find("expected an object"), std::string::npos);
   }
-  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -1,11 +1,8 @@
-// Shared by the scene and eval tests: scratch folders, normal maps written as float EXR (exact values), and
+// Shared by the scene and eval tests: normal maps written as float EXR (exact values), and
 // a small scene (a plane seen at an angle, a sphere and a bent quad; a point light, a directional light and
 // a sky) whose materials a test chooses.
 #pragma once
 
-#include <unistd.h>
-
-#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -18,26 +15,6 @@
 #include "libbake/image/image_io.h"
 
 namespace mbk::testing {
-
-class ScratchDir {
- public:
-  explicit ScratchDir(const std::string& name) {
-    static std::atomic<int> counter{0};
-    path_ = std::filesystem::temp_directory_path() /
-            ("mbk_" + name + "_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  const std::filesystem::path& path() const { return path_; }
-  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
-
- private:
-  std::filesystem::path path_;
-};
 
 // Texel (x, row) = normal(x, row), stored as float RGB (the loader takes float images as the vector).
 inline void write_normal_map(const std::filesystem::path& path, uint32_t width, uint32_t height,
