@@ -40,6 +40,7 @@ std::unique_ptr<Command> make_colormap_command();
 std::unique_ptr<Command> make_moments_command();
 std::unique_ptr<Command> make_crease_command();
 std::unique_ptr<Command> make_graph_command();
+std::unique_ptr<Command> make_synth_command();
 std::unique_ptr<Command> make_bake_command();
 std::unique_ptr<Command> make_render_command();
 std::unique_ptr<Command> make_compare_command();

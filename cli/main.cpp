@@ -33,6 +33,7 @@ std::vector<CommandEntry> command_table() {
       {"crease", "Bake a normal map with discontinuity curves into crisp-crease maps (asset kind crease)",
        make_crease_command},
       {"graph", "Analyse an exemplar graph for multiscale texture synthesis (asset kind graph)", make_graph_command},
+      {"synth", "Synthesize a window of a multiscale texture from an analysed exemplar graph", make_synth_command},
       {"bake", "Bake the assets a scene's effects need, skipping up-to-date ones", make_bake_command},
       {"render", "Render a scene with the reference shader evaluator (or its brute-force --reference)",
        make_render_command},

@@ -2,6 +2,7 @@
 #include "formats/graph_layout.h"
 
 #include "formats/asset.h"
+#include "formats/error.h"
 
 namespace mbk {
 
@@ -66,6 +67,20 @@ std::string check_graph_section_shapes(const Asset& asset, const GraphLayout& g)
       return "section '" + std::string(name) + "' has the wrong type or shape for the parameters";
   }
   return {};
+}
+
+GraphTables read_graph_tables(const Asset& asset) {
+  if (asset.kind().name != "graph")
+    throw Error(ExitCode::invalid_input, "expected a 'graph' asset, found '" + std::string(asset.kind().name) + "'",
+                asset.where());
+  GraphTables t;
+  std::string problem = parse_graph_layout(asset, t.layout);
+  if (problem.empty()) problem = check_graph_section_shapes(asset, t.layout);
+  if (!problem.empty()) throw Error(ExitCode::invalid_input, "malformed graph asset: " + problem, asset.where());
+  t.stacks = asset.read<float>(kGraphStacksSection);
+  t.candidates = asset.read<uint32_t>(kGraphCandidatesSection);
+  t.transfer = asset.read<float>(kGraphTransferSection);
+  return t;
 }
 
 }  // namespace mbk

@@ -47,4 +47,19 @@ std::string parse_graph_layout(const Asset& asset, GraphLayout& layout);
 // Empty when the three sections have the types and shapes above, else what differs.
 std::string check_graph_section_shapes(const Asset& asset, const GraphLayout& layout);
 
+// A graph asset read for synthesis: its layout and the three sections.
+struct GraphTables {
+  GraphLayout layout;
+  std::vector<float> stacks, transfer;
+  std::vector<uint32_t> candidates;
+  // Index of texel (x, y) of level k of exemplar i in `stacks` (times channels) and, times K, in the
+  // candidate slots.
+  size_t texel(uint32_t i, uint32_t k, uint32_t x, uint32_t y) const {
+    return ((size_t(i) * layout.levels + k) * layout.side + y) * layout.side + x;
+  }
+};
+// Error(invalid_input) naming the file when the asset is not a well-formed graph asset; values are not checked
+// (validate does that).
+GraphTables read_graph_tables(const Asset& asset);
+
 }  // namespace mbk

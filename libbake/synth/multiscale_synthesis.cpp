@@ -1,0 +1,252 @@
+// Multiscale synthesis of windows (see multiscale_synthesis.h).
+#include "libbake/synth/multiscale_synthesis.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "formats/error.h"
+#include "libbake/core/hash.h"
+#include "libbake/core/parallel.h"
+
+namespace mbk {
+namespace {
+
+constexpr int kReach = 2;  // the 5 x 5 neighbourhood's radius
+constexpr uint32_t kMaxLevel = 40;
+
+struct Pixel {
+  uint32_t e = 0, k = 0, x = 0, y = 0;  // texel pointer
+  float R[4] = {0, 0, 0, 0};            // cumulative transfer offset
+};
+
+struct Region {
+  int64_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  int64_t width() const { return x1 - x0; }
+  int64_t height() const { return y1 - y0; }
+  Region grown(int64_t by) const { return {x0 - by, y0 - by, x1 + by, y1 + by}; }
+};
+
+int64_t floor_div2(int64_t v) { return v >= 0 ? v / 2 : -((-v + 1) / 2); }
+
+uint32_t wrap(int64_t v, uint32_t m) { return uint32_t(((v % int64_t(m)) + m) % m); }
+
+class Synthesizer {
+ public:
+  Synthesizer(const GraphTables& g, const SynthesisOptions& o)
+      : g_(g),
+        o_(o),
+        L_(g.layout.levels - 1),
+        admissible_(admissible_levels(g.layout.exemplars, g.layout.edges, g.layout.levels)) {}
+
+  Image run(Progress& progress, SynthesisStatistics* stats) {
+    const Region window{o_.x, o_.y, o_.x + o_.width, o_.y + o_.height};
+    const int64_t pad = int64_t(kReach) * 4 * o_.passes;
+    // The regions, finest first: level t computes region[t]; its parents must cover what upsampling reads.
+    std::vector<Region> region(o_.level + 1);
+    region[o_.level] = window.grown(pad);
+    for (uint32_t t = o_.level; t > 0; --t) {
+      const Region& c = region[t];
+      region[t - 1] =
+          Region{floor_div2(c.x0) - 1, floor_div2(c.y0) - 1, floor_div2(c.x1 - 1) + 2, floor_div2(c.y1 - 1) + 2}.grown(
+              pad);
+    }
+    progress.start("synthesis", uint64_t(o_.level) + 1);
+    std::vector<Pixel> level(size_t(region[0].width() * region[0].height()));
+    for (Pixel& p : level) p.e = g_.layout.root;  // texel (0, 0) of the root's level 0
+    for (uint32_t t = 0; t <= o_.level; ++t) {
+      if (t > 0) level = upsample(level, region[t - 1], region[t]);
+      jitter(level, region[t], t);
+      for (uint32_t pass = 0; pass < o_.passes; ++pass)
+        for (int parity = 0; parity < 4; ++parity) correct(level, region[t], parity);
+      if (stats) {
+        stats->pixels_computed += level.size();
+        stats->matching_error.push_back(mean_error(level, region[t]));
+      }
+      progress.advance();
+    }
+    progress.finish();
+    const uint32_t C = g_.layout.channels;
+    Image out{o_.width, o_.height, C, std::vector<float>(size_t(o_.width) * o_.height * C)};
+    const Region& r = region[o_.level];
+    for (uint32_t y = 0; y < o_.height; ++y)
+      for (uint32_t x = 0; x < o_.width; ++x) {
+        const Pixel& p = level[size_t(y + pad) * r.width() + (x + pad)];
+        for (uint32_t c = 0; c < C; ++c) out.at(x, y, c) = value(p.e, p.k, p.x, p.y, c) + p.R[c];
+      }
+    return out;
+  }
+
+ private:
+  uint32_t spacing(uint32_t k) const { return 1u << (L_ - k); }
+  float value(uint32_t e, uint32_t k, uint32_t x, uint32_t y, uint32_t c) const {
+    return g_.stacks[g_.texel(e, k, x, y) * g_.layout.channels + c];
+  }
+  static const Pixel& at(const std::vector<Pixel>& s, const Region& r, int64_t x, int64_t y) {
+    x = std::clamp(x, r.x0, r.x1 - 1);
+    y = std::clamp(y, r.y0, r.y1 - 1);
+    return s[size_t((y - r.y0) * r.width() + (x - r.x0))];
+  }
+
+  std::vector<Pixel> upsample(const std::vector<Pixel>& parents, const Region& pr, const Region& cr) const {
+    const uint32_t m = g_.layout.side, C = g_.layout.channels;
+    std::vector<Pixel> children(size_t(cr.width() * cr.height()));
+    parallel_for(cr.y0, cr.y1, [&](int64_t y) {
+      for (int64_t x = cr.x0; x < cr.x1; ++x) {
+        const Pixel& parent = at(parents, pr, floor_div2(x), floor_div2(y));
+        Pixel& c = children[size_t((y - cr.y0) * cr.width() + (x - cr.x0))];
+        c.e = parent.e;
+        c.k = std::min(parent.k + 1, L_);
+        const double h = spacing(c.k);
+        const double dx = (x - 2 * floor_div2(x)) - 0.5, dy = (y - 2 * floor_div2(y)) - 0.5;
+        c.x = wrap(int64_t(parent.x) + int64_t(std::floor(h * dx)), m);
+        c.y = wrap(int64_t(parent.y) + int64_t(std::floor(h * dy)), m);
+        // R bilinear in the four nearest parents: the child's centre at parent coordinates (x + 1/2) / 2 - 1/2.
+        const double fx = (double(x) + 0.5) / 2.0 - 0.5, fy = (double(y) + 0.5) / 2.0 - 0.5;
+        const int64_t px = int64_t(std::floor(fx)), py = int64_t(std::floor(fy));
+        const double ax = fx - double(px), ay = fy - double(py);
+        for (uint32_t ch = 0; ch < C; ++ch)
+          c.R[ch] = float(
+              (1 - ax) * (1 - ay) * at(parents, pr, px, py).R[ch] + ax * (1 - ay) * at(parents, pr, px + 1, py).R[ch] +
+              (1 - ax) * ay * at(parents, pr, px, py + 1).R[ch] + ax * ay * at(parents, pr, px + 1, py + 1).R[ch]);
+      }
+    });
+    return children;
+  }
+
+  void jitter(std::vector<Pixel>& s, const Region& r, uint32_t t) const {
+    const double rt = o_.jitter[std::min<size_t>(t, o_.jitter.size() - 1)];
+    if (rt == 0.0) return;
+    const uint32_t m = g_.layout.side;
+    parallel_for(r.y0, r.y1, [&](int64_t y) {
+      for (int64_t x = r.x0; x < r.x1; ++x) {
+        Pixel& p = s[size_t((y - r.y0) * r.width() + (x - r.x0))];
+        const uint32_t h = hash4(o_.seed, t, uint32_t(x), uint32_t(y));
+        const double hx = 2.0 * unit_from_hash(h) - 1.0, hy = 2.0 * unit_from_hash(pcg_hash(h ^ 0x6a09e667u)) - 1.0;
+        const double hk = spacing(p.k);
+        p.x = wrap(int64_t(p.x) + int64_t(std::floor(hk * hx * rt + 0.5)), m);
+        p.y = wrap(int64_t(p.y) + int64_t(std::floor(hk * hy * rt + 0.5)), m);
+      }
+    });
+  }
+
+  // The synthesized 5 x 5 neighbourhood of p in p's own colour space: E(S[p + Delta]) + R_{p + Delta} - R_p.
+  void neighbourhood(const std::vector<Pixel>& s, const Region& r, int64_t x, int64_t y, float* out) const {
+    const uint32_t C = g_.layout.channels;
+    const Pixel& self = at(s, r, x, y);
+    for (int dy = -kReach; dy <= kReach; ++dy)
+      for (int dx = -kReach; dx <= kReach; ++dx) {
+        const Pixel& q = at(s, r, x + dx, y + dy);
+        for (uint32_t c = 0; c < C; ++c) *out++ = value(q.e, q.k, q.x, q.y, c) + q.R[c] - self.R[c];
+      }
+  }
+
+  // Eq. 5.1 for the candidate texel (e, k, cx, cy) with offset b, against the neighbourhood n.
+  double error(const float* n, uint32_t e, uint32_t k, int64_t cx, int64_t cy, const float* b) const {
+    const uint32_t m = g_.layout.side, C = g_.layout.channels;
+    const int64_t h = spacing(k);
+    double sum = 0.0;
+    for (int dy = -kReach; dy <= kReach; ++dy)
+      for (int dx = -kReach; dx <= kReach; ++dx) {
+        const uint32_t vx = wrap(cx + dx * h, m), vy = wrap(cy + dy * h, m);
+        for (uint32_t c = 0; c < C; ++c) {
+          const double d = double(*n++) - (value(e, k, vx, vy, c) + b[c]);
+          sum += d * d;
+        }
+      }
+    return sum;
+  }
+
+  void correct(std::vector<Pixel>& s, const Region& r, int parity) const {
+    const uint32_t m = g_.layout.side, C = g_.layout.channels, K = g_.layout.candidates;
+    const std::vector<Pixel> old = s;
+    const float zero[4] = {0, 0, 0, 0};
+    parallel_for(r.y0, r.y1, [&](int64_t y) {
+      if (((y & 1) << 1 | 0) != (parity & 2)) return;
+      float n[25 * 4];
+      for (int64_t x = r.x0; x < r.x1; ++x) {
+        if ((x & 1) != (parity & 1)) continue;
+        neighbourhood(old, r, x, y, n);
+        const Pixel& self = at(old, r, x, y);
+        // Only texels of the admissible levels of the pixel's level compete (Sec. 5.2.1.2): at an exemplar's
+        // finest level that excludes the pixel's own texel, so correction moves it on to a finer exemplar (or,
+        // through a loop, back up its own stack) instead of getting stuck; a level with no admissible level
+        // keeps its pixel.
+        Pixel best = self;
+        double best_error = allowed(self, self.e, self.k) ? error(n, self.e, self.k, self.x, self.y, zero)
+                                                          : std::numeric_limits<double>::infinity();
+        const auto consider = [&](uint32_t e, uint32_t k, int64_t cx, int64_t cy, const float* b) {
+          if (!allowed(self, e, k)) return;
+          const double err = error(n, e, k, cx, cy, b);
+          if (!(err < best_error)) return;
+          best_error = err;
+          best.e = e;
+          best.k = k;
+          best.x = wrap(cx, m);
+          best.y = wrap(cy, m);
+          for (uint32_t c = 0; c < C; ++c) best.R[c] = self.R[c] + b[c];
+        };
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const Pixel& q = at(old, r, x + dx, y + dy);
+            const int64_t hq = spacing(q.k);
+            if (dx != 0 || dy != 0) consider(q.e, q.k, int64_t(q.x) - dx * hq, int64_t(q.y) - dy * hq, zero);
+            const size_t slots = g_.texel(q.e, q.k, q.x, q.y) * K;
+            for (uint32_t c = 0; c < K; ++c) {
+              const uint32_t* cand = &g_.candidates[(slots + c) * 4];
+              if (cand[0] == kGraphNoCandidate) continue;
+              const int64_t hl = spacing(cand[1]);
+              const float* b = o_.correct_inconsistency ? &g_.transfer[(slots + c) * C] : zero;
+              consider(cand[0], cand[1], int64_t(cand[2]) - dx * hl, int64_t(cand[3]) - dy * hl, b);
+            }
+          }
+        s[size_t((y - r.y0) * r.width() + (x - r.x0))] = best;
+      }
+    });
+  }
+
+  double mean_error(const std::vector<Pixel>& s, const Region& r) const {
+    std::vector<double> rows(size_t(r.height()), 0.0);
+    const float zero[4] = {0, 0, 0, 0};
+    parallel_for(r.y0, r.y1, [&](int64_t y) {
+      float n[25 * 4];
+      for (int64_t x = r.x0; x < r.x1; ++x) {
+        neighbourhood(s, r, x, y, n);
+        const Pixel& p = at(s, r, x, y);
+        rows[size_t(y - r.y0)] += error(n, p.e, p.k, p.x, p.y, zero) / 25.0;
+      }
+    });
+    double sum = 0.0;
+    for (double v : rows) sum += v;  // serial, in row order: deterministic
+    return sum / double(s.size());
+  }
+
+  bool allowed(const Pixel& at, uint32_t e, uint32_t k) const {
+    const auto& set = admissible_[at.e][at.k];
+    return std::find(set.begin(), set.end(), StackLevel{e, k}) != set.end();
+  }
+
+  const GraphTables& g_;
+  const SynthesisOptions& o_;
+  uint32_t L_;
+  std::vector<std::vector<std::vector<StackLevel>>> admissible_;
+};
+
+}  // namespace
+
+Image synthesize_window(const GraphTables& graph, const SynthesisOptions& options, Progress& progress,
+                        SynthesisStatistics* statistics) {
+  if (options.width == 0 || options.height == 0)
+    throw Error(ExitCode::bad_command_line, "the window must have a positive width and height");
+  if (uint64_t(options.width) * options.height > (uint64_t(1) << 28))
+    throw Error(ExitCode::bad_command_line, "the window may hold at most 2^28 pixels: synthesize it as tiles");
+  if (options.level > kMaxLevel)
+    throw Error(ExitCode::bad_command_line, "--level must be at most " + std::to_string(kMaxLevel));
+  if (options.jitter.empty()) throw Error(ExitCode::bad_command_line, "--jitter needs at least one value");
+  for (double r : options.jitter)
+    if (!(r >= 0.0 && r <= 1.0)) throw Error(ExitCode::bad_command_line, "--jitter values must be in [0, 1]");
+  if (options.passes == 0 || options.passes > 8) throw Error(ExitCode::bad_command_line, "--passes must be 1..8");
+  return Synthesizer(graph, options).run(progress, statistics);
+}
+
+}  // namespace mbk
