@@ -11,6 +11,7 @@
 #include "cli/stage_timer.h"
 #include "formats/asset.h"
 #include "formats/file_extension.h"
+#include "libbake/image/normal_map_encoding.h"
 #include "libbake/synth/multiscale_synthesis.h"
 
 namespace mbk::cli {
@@ -86,8 +87,15 @@ class SynthCommand : public Command {
     const double load_seconds = timer.lap();
     const Image window = synthesize_window(graph, options_.synthesis, progress);
     const double synth_seconds = timer.lap();
-    options_.output.write_with(
-        [&](const std::filesystem::path& temporary) { save_image(temporary, window, {}, options_.output.path); });
+    options_.output.write_with([&](const std::filesystem::path& temporary) {
+      if (!graph.layout.normal_map) return save_image(temporary, window, {}, options_.output.path);
+      NormalMap map;  // encoded as every baker reads normal maps back (16-bit PNG (n + 1) / 2, float EXR n)
+      map.width = window.width;
+      map.height = window.height;
+      for (size_t i = 0; i < window.pixels.size(); i += 3)
+        map.texels.push_back(Vec3f(window.pixels[i], window.pixels[i + 1], window.pixels[i + 2]));
+      save_normal_map(temporary, map, YConvention::plus_y, options_.output.path);
+    });
     const double write_seconds = timer.lap();
     if (!options_.run.quiet)
       std::cout << std::fixed << std::setprecision(3) << "synth: wrote " << options_.output.path << " (" << window.width

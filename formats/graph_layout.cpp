@@ -42,6 +42,7 @@ std::string parse_graph_layout(const Asset& asset, GraphLayout& g) {
   if (!graph.contains("root") || !graph["root"].is_number_unsigned() || graph["root"].get<uint64_t>() >= g.exemplars)
     return "graph.root must be an exemplar index";
   g.root = graph["root"];
+  g.normal_map = graph.value("normal_map", nlohmann::json(false)).is_boolean() && graph.value("normal_map", false);
   if (!graph.contains("edges") || !graph["edges"].is_array()) return "graph.edges must be an array";
   g.edges.clear();
   for (const auto& e : graph["edges"]) {

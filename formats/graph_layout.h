@@ -3,7 +3,8 @@
 //
 // Metadata: parameters {"side": m, "levels": L + 1, "channels": C, "exemplars": E, "candidates": K,
 // "pca_components": P}; "graph": {"ids": [E names], "root": index, "edges": [[source, destination, r], ...]}
-// (explicit edges; the implicit self-loops r = 0 are not listed).
+// (explicit edges; the implicit self-loops r = 0 are not listed), "normal_map" (optional, default false: the
+// exemplars were normal maps, stored as unit +Y vectors; synthesis renormalises its output).
 // Sections (row-major, the last index fastest):
 //   stacks      f32 [E, L + 1, m, m, C]     Gaussian stack levels, coarsest (k = 0) first; level L is the exemplar
 //   candidates  u32 [E, L + 1, m, m, K, 4]  per stack texel (exemplar i, level k, row y, column x) its K candidates
@@ -33,6 +34,7 @@ inline constexpr const char* kGraphTransferSection = "transfer";
 struct GraphLayout {
   uint32_t side = 0, levels = 0, channels = 0, exemplars = 0, candidates = 0, pca_components = 0;
   uint32_t root = 0;
+  bool normal_map = false;  // graph.normal_map: stacks hold unit +Y tangent-space vectors (their blurs shorter)
   std::vector<std::string> ids;
   std::vector<GraphEdge> edges;
   std::vector<uint64_t> stacks_shape() const;

@@ -6,6 +6,7 @@
 
 #include "formats/atomic_file.h"
 #include "formats/error.h"
+#include "libbake/image/normal_map.h"
 #include "libbake/scene/json_fields.h"
 
 namespace mbk {
@@ -59,6 +60,11 @@ ExemplarGraph parse_exemplar_graph(const nlohmann::json& json, const std::string
         fail("an edge from an exemplar to itself with r = 0 is implicit; remove it", e.path());
       if (!seen.emplace(edge.source, edge.destination, edge.r).second) fail("duplicate edge", e.path());
       g.edges.push_back(edge);
+    }
+    if (const nlohmann::json* v = top.optional("normal_map")) g.normal_map = json_bool(*v, "normal_map");
+    if (const nlohmann::json* v = top.optional("convention")) {
+      if (!g.normal_map) fail("'convention' applies to normal-map graphs only (\"normal_map\": true)", "convention");
+      g.convention = convention_name(parse_convention(json_string(*v, "convention")));
     }
     top.reject_unknown_keys();
     // Reachability from the root along the edges (Sec. 5.2: synthesis starts at the root and follows edges).

@@ -7,7 +7,11 @@
 // The file (JSON; unknown and duplicate keys are errors naming their path):
 //   {"exemplars": [{"id": "rock", "path": "rock.png"}, ...],   paths relative to the graph file
 //    "root": "rock",                                            the coarsest-level start of synthesis
-//    "edges": [{"source": "rock", "destination": "pebbles", "r": 2}, ...]}
+//    "edges": [{"source": "rock", "destination": "pebbles", "r": 2}, ...],
+//    "normal_map": false,                                       optional: the exemplars are normal maps
+//    "convention": "+Y"}                                        optional, for normal maps: +Y/-Y (opengl/directx)
+// Normal-map exemplars are decoded and renormalised as every baker reads normal maps (libbake/image/normal_map.h),
+// analysed as vectors, and synthesized as unit normals.
 // Exemplars are images OpenImageIO reads (colour images or normal maps), all of one size m x m with m = 2^L a
 // power of two in [4, 4096] (Sec. 4.1 assumes m = 2^L) and one channel count. r is an integer, 0 <= r < L
 // (r_max = L: with r >= L no stack level of the source has a destination level, Sec. 5.2.1.2); an explicit edge
@@ -34,6 +38,8 @@ struct ExemplarGraph {
   std::vector<Exemplar> exemplars;
   uint32_t root = 0;
   std::vector<GraphEdge> edges;  // as listed, implicit self-loops not included
+  bool normal_map = false;
+  std::string convention = "+Y";  // of normal-map exemplars
 };
 
 // Parses and checks the structure (ids, root, edges, reachability; not the images). Error(invalid_input) naming

@@ -15,7 +15,26 @@ LoadedExemplars load_graph_exemplars(const ExemplarGraph& graph, const std::stri
     const std::string where = e.path.string() + " (exemplar '" + e.id + "' of " + graph_file + ")";
     ImageFileInfo info;
     const ImageHeader header = read_image_header_within(e.path, 4096, "exemplar '" + e.id + "'");
-    Image im = load_image(e.path, &info);
+    Image im;
+    nlohmann::json record;
+    if (graph.normal_map) {  // decoded and renormalised like every baker's input; stored as vectors
+      NormalMapLoadOptions options;
+      options.convention = parse_convention(graph.convention);
+      const LoadedNormalMap loaded = load_normal_map(e.path, options);
+      im = {loaded.map.width, loaded.map.height, 3, {}};
+      for (const Vec3f& n : loaded.map.texels) im.pixels.insert(im.pixels.end(), {n.x(), n.y(), n.z()});
+      record = loaded.record.to_json();
+      record["path"] = e.path_as_written;
+    } else {
+      im = load_image(e.path, &info);
+      record = {{"path", e.path_as_written},
+                {"content_hash", file_content_hash(e.path)},
+                {"bytes", std::filesystem::file_size(e.path)},
+                {"width", header.width},
+                {"height", header.height},
+                {"channels", info.file_channels},
+                {"pixel_format", info.pixel_format}};
+    }
     if (im.width != im.height || im.width < 4 || exact_log2(im.width) < 0)
       throw Error(ExitCode::invalid_input,
                   "exemplar is " + std::to_string(im.width) + "x" + std::to_string(im.height) +
@@ -37,13 +56,7 @@ LoadedExemplars load_graph_exemplars(const ExemplarGraph& graph, const std::stri
                     "non-finite value at texel (" + std::to_string(i / im.channels % im.width) + ", " +
                         std::to_string(i / im.channels / im.width) + ")",
                     where);
-    out.records.push_back({{"path", e.path_as_written},
-                           {"content_hash", file_content_hash(e.path)},
-                           {"bytes", std::filesystem::file_size(e.path)},
-                           {"width", header.width},
-                           {"height", header.height},
-                           {"channels", info.file_channels},
-                           {"pixel_format", info.pixel_format}});
+    out.records.push_back(std::move(record));
     out.images.push_back(std::move(im));
   }
   check_edge_scales(graph, uint32_t(exact_log2(out.images[0].width)), graph_file);
@@ -67,7 +80,7 @@ AssetWriter graph_asset_writer(const ExemplarGraph& graph, const GraphAnalysis& 
   nlohmann::json ids = nlohmann::json::array(), edges = nlohmann::json::array();
   for (const auto& e : graph.exemplars) ids.push_back(e.id);
   for (const GraphEdge& e : graph.edges) edges.push_back({e.source, e.destination, e.r});
-  metadata["graph"] = {{"ids", ids}, {"root", graph.root}, {"edges", edges}};
+  metadata["graph"] = {{"ids", ids}, {"root", graph.root}, {"edges", edges}, {"normal_map", graph.normal_map}};
   metadata["conventions"] = {
       {"stacks",
        "level k of L + 1: the exemplar filtered with a periodic Gaussian of standard deviation 2^(L-k-1) "
@@ -76,6 +89,8 @@ AssetWriter graph_asset_writer(const ExemplarGraph& graph, const GraphAnalysis& 
        "(exemplar, level, x, y) per candidate, best first, 5 x 5 neighbourhoods at spacings h_k, h_l, "
        "toroidal; 0xFFFFFFFF x 4 for none"},
       {"transfer", "constant offset b: destination + b matches the source ([Han08] Sec. 5.3)"}};
+  if (graph.normal_map)
+    metadata["conventions"]["normal_convention"] = "+Y (the exemplars decoded from " + graph.convention + ")";
   size_t across = 0, filled = 0;
   double offset = 0.0;
   for (size_t s = 0; s < a.candidates.size(); ++s) {

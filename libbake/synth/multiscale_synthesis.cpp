@@ -73,6 +73,11 @@ class Synthesizer {
       for (uint32_t x = 0; x < o_.width; ++x) {
         const Pixel& p = level[size_t(y + pad) * r.width() + (x + pad)];
         for (uint32_t c = 0; c < C; ++c) out.at(x, y, c) = value(p.e, p.k, p.x, p.y, c) + p.R[c];
+        if (g_.layout.normal_map && C == 3) {  // unit normals; a vanishing vector (cancelled blur) faces out
+          float* n = &out.pixels[(size_t(y) * o_.width + x) * 3];
+          const double len = std::sqrt(double(n[0]) * n[0] + double(n[1]) * n[1] + double(n[2]) * n[2]);
+          for (int c = 0; c < 3; ++c) n[c] = len > 0.0 ? float(n[c] / len) : (c == 2 ? 1.0f : 0.0f);
+        }
       }
     return out;
   }
@@ -97,7 +102,8 @@ class Synthesizer {
         Pixel& c = children[size_t((y - cr.y0) * cr.width() + (x - cr.x0))];
         c.e = parent.e;
         c.k = std::min(parent.k + 1, L_);
-        const double h = spacing(c.k);
+        // A pixel stuck at its exemplar's finest level magnifies it: its children keep its texel (h < 1).
+        const double h = stuck(parent) ? 0.0 : spacing(c.k);
         const double dx = (x - 2 * floor_div2(x)) - 0.5, dy = (y - 2 * floor_div2(y)) - 0.5;
         c.x = wrap(int64_t(parent.x) + int64_t(std::floor(h * dx)), m);
         c.y = wrap(int64_t(parent.y) + int64_t(std::floor(h * dy)), m);
@@ -121,6 +127,7 @@ class Synthesizer {
     parallel_for(r.y0, r.y1, [&](int64_t y) {
       for (int64_t x = r.x0; x < r.x1; ++x) {
         Pixel& p = s[size_t((y - r.y0) * r.width() + (x - r.x0))];
+        if (stuck(p)) continue;  // below one texel of spacing there is nothing to jitter by
         const uint32_t h = hash4(o_.seed, t, uint32_t(x), uint32_t(y));
         const double hx = 2.0 * unit_from_hash(h) - 1.0, hy = 2.0 * unit_from_hash(pcg_hash(h ^ 0x6a09e667u)) - 1.0;
         const double hk = spacing(p.k);
@@ -141,8 +148,10 @@ class Synthesizer {
       }
   }
 
-  // Eq. 5.1 for the candidate texel (e, k, cx, cy) with offset b, against the neighbourhood n.
-  double error(const float* n, uint32_t e, uint32_t k, int64_t cx, int64_t cy, const float* b) const {
+  // Eq. 5.1 for the candidate texel (e, k, cx, cy) with offset b, against the neighbourhood n; the sum stops once
+  // it reaches `bound` (the candidate can no longer win: only a strictly smaller error replaces the best).
+  double error(const float* n, uint32_t e, uint32_t k, int64_t cx, int64_t cy, const float* b,
+               double bound = std::numeric_limits<double>::infinity()) const {
     const uint32_t m = g_.layout.side, C = g_.layout.channels;
     const int64_t h = spacing(k);
     double sum = 0.0;
@@ -153,6 +162,7 @@ class Synthesizer {
           const double d = double(*n++) - (value(e, k, vx, vy, c) + b[c]);
           sum += d * d;
         }
+        if (sum >= bound) return sum;
       }
     return sum;
   }
@@ -175,9 +185,22 @@ class Synthesizer {
         Pixel best = self;
         double best_error = allowed(self, self.e, self.k) ? error(n, self.e, self.k, self.x, self.y, zero)
                                                           : std::numeric_limits<double>::infinity();
+        // Coherent neighbours often propose the same texel with the same offset: evaluate each once.
+        struct Seen {
+          uint32_t e, k, x, y;
+          const float* b;
+        };
+        Seen seen[64] = {{self.e, self.k, self.x, self.y, zero}};
+        int seen_count = 1;
         const auto consider = [&](uint32_t e, uint32_t k, int64_t cx, int64_t cy, const float* b) {
           if (!allowed(self, e, k)) return;
-          const double err = error(n, e, k, cx, cy, b);
+          const uint32_t wx = wrap(cx, m), wy = wrap(cy, m);
+          for (int i = 0; i < seen_count; ++i)
+            if (seen[i].e == e && seen[i].k == k && seen[i].x == wx && seen[i].y == wy &&
+                (seen[i].b == b || std::equal(b, b + C, seen[i].b)))
+              return;
+          if (seen_count < 64) seen[seen_count++] = {e, k, wx, wy, b};
+          const double err = error(n, e, k, cx, cy, b, best_error);
           if (!(err < best_error)) return;
           best_error = err;
           best.e = e;
@@ -220,6 +243,10 @@ class Synthesizer {
     for (double v : rows) sum += v;  // serial, in row order: deterministic
     return sum / double(s.size());
   }
+
+  // At its exemplar's finest level with nowhere to go (no admissible level there: the exemplar has no outgoing
+  // edge of r >= 1).
+  bool stuck(const Pixel& p) const { return p.k == L_ && admissible_[p.e][L_].empty(); }
 
   bool allowed(const Pixel& at, uint32_t e, uint32_t k) const {
     const auto& set = admissible_[at.e][at.k];
