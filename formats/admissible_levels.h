@@ -30,4 +30,18 @@ std::vector<std::vector<std::vector<StackLevel>>> admissible_levels(uint32_t exe
                                                                     const std::vector<GraphEdge>& edges,
                                                                     uint32_t levels);
 
+// The superexemplar's stack levels per synthesis level ([Han08] thesis Sec. 5.4, "red depth"): the stack levels a
+// pixel of synthesis level t may point to. Level 0: the root's level 0 and every level reachable from it by
+// correction steps (black edges: admissible levels, repeatedly); level t + 1: the upsampled levels of level t (red
+// edges: k -> k + 1; a level L with no admissible level stays, as synthesis magnifies it) and their closure under
+// correction. The sequence is eventually periodic (finitely many sets): sets[0..n-1] are the first n distinct sets
+// and level t >= n has the set of repeat_from + (t - repeat_from) mod (n - repeat_from).
+struct SuperexemplarLevels {
+  std::vector<std::vector<StackLevel>> sets;  // each sorted
+  uint32_t repeat_from = 0;
+  const std::vector<StackLevel>& at(uint64_t t) const;
+};
+SuperexemplarLevels superexemplar_levels(uint32_t exemplars, const std::vector<GraphEdge>& edges, uint32_t levels,
+                                         uint32_t root);
+
 }  // namespace mbk

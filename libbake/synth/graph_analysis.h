@@ -4,8 +4,12 @@
 //   - admissible candidate levels of every stack level (admissible_levels.h);
 //   - k-coherence candidate sets (Sec. 5.2.2.3, Eq. 5.2, after Tong et al. 2002): for every texel E^i_k[u], the K
 //     texels E^j_l[v] over the admissible levels whose 5 x 5 neighbourhoods, sampled at the levels' own spacings
-//     h_k and h_l (toroidally), best match its own. Matched in PCA space (neighbourhood_pca.h; one PCA per source
-//     level, fitted on its admissible levels' neighbourhoods) by exact FLANN search (neighbourhood_search.h);
+//     h_k and h_l (toroidally), best match its own. Matched in PCA space (neighbourhood_pca.h) by exact FLANN
+//     search (neighbourhood_search.h). Deviation [Han08]: Sec. 5.4 fits one PCA per synthesis level, on every
+//     stack level of that red depth (formats/admissible_levels.h superexemplar_levels, stored in the asset); we
+//     fit one per source level on its admissible levels, the neighbourhoods its search actually compares: a stack
+//     level occurs at several red depths through loops and would otherwise need one candidate set per depth
+//     (test: GraphAnalysis.FirstCandidateIsTheBruteForceNearestInPcaSpace...);
 //     spatially dispersed (after Zelinka & Garland 2002): among the 64 nearest, candidate c > 0 is the best one
 //     lying at least max(2, min(h_l, m / 4)) texels (toroidal, per axis max) from every earlier candidate of its
 //     level, or, when none does (a smooth coarse level, whose nearest neighbourhoods all lie around the texel), the

@@ -81,6 +81,14 @@ AssetWriter graph_asset_writer(const ExemplarGraph& graph, const GraphAnalysis& 
   for (const auto& e : graph.exemplars) ids.push_back(e.id);
   for (const GraphEdge& e : graph.edges) edges.push_back({e.source, e.destination, e.r});
   metadata["graph"] = {{"ids", ids}, {"root", graph.root}, {"edges", edges}, {"normal_map", graph.normal_map}};
+  const SuperexemplarLevels super = superexemplar_levels(layout.exemplars, graph.edges, a.levels, graph.root);
+  nlohmann::json sets = nlohmann::json::array();
+  for (const auto& set : super.sets) {
+    nlohmann::json levels = nlohmann::json::array();
+    for (const StackLevel& l : set) levels.push_back({l.exemplar, l.level});
+    sets.push_back(levels);
+  }
+  metadata["superexemplar"] = {{"sets", sets}, {"repeat_from", super.repeat_from}};
   metadata["conventions"] = {
       {"stacks",
        "level k of L + 1: the exemplar filtered with a periodic Gaussian of standard deviation 2^(L-k-1) "
