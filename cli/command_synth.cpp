@@ -2,6 +2,7 @@
 // [--no-correction]`: synthesizes a window of a multiscale texture from an analysed exemplar graph ([Han08] thesis
 // Sec. 5.2.2; libbake/synth/multiscale_synthesis.h). Deterministic: a window synthesized alone has the same pixels
 // as the same region of a larger window, whatever the thread count.
+#include <cctype>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -22,8 +23,10 @@ class SynthCommand : public Command {
   void add_options(CLI::App& app) override {
     app.add_option("GRAPH", options_.graph, "Analysed exemplar graph (.mbk from `microbake graph`)")->required();
     add_output_option(app, options_.output, "the synthesized window (.exr float, or .png 16-bit)");
-    app.add_option("--level", options_.synthesis.level,
-                   "Synthesis level T: the root's texels are 2^T pixels wide there (0..40)")
+    app.add_option(
+           "--level", options_.synthesis.level,
+           "Synthesis level T (0..40): a texel of the root's coarsest stack level is 2^T pixels wide there, a texel "
+           "of the root itself 2^(T - L)")
         ->required();
     app.add_option("--window", options_.window, "X,Y,W,H: the window's origin and size in pixels of level T")
         ->required();
@@ -54,9 +57,10 @@ class SynthCommand : public Command {
       } catch (const std::exception&) {
         used = std::string::npos;
       }
-      if (used != part.size()) throw Error(ExitCode::bad_command_line, "--window: '" + part + "' is not an integer");
+      if (used != part.size() || part.empty() || std::isspace(static_cast<unsigned char>(part[0])))
+        throw Error(ExitCode::bad_command_line, "--window: '" + part + "' is not an integer");
     }
-    if (w.size() != 4 || w[2] <= 0 || w[3] <= 0 || w[2] > 65536 || w[3] > 65536)
+    if (w.size() != 4 || options_.window.back() == ',' || w[2] <= 0 || w[3] <= 0 || w[2] > 65536 || w[3] > 65536)
       throw Error(ExitCode::bad_command_line, "--window must be X,Y,W,H with 1 <= W, H <= 65536");
     options_.synthesis.x = w[0];
     options_.synthesis.y = w[1];

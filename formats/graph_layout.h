@@ -60,8 +60,8 @@ struct GraphTables {
     return ((size_t(i) * layout.levels + k) * layout.side + y) * layout.side + x;
   }
 };
-// Error(invalid_input) naming the file when the asset is not a well-formed graph asset; values are not checked
-// (validate does that).
+// Error(invalid_input) naming the file when the asset is not a well-formed graph asset or fails the kind's
+// invariants (formats/kind_graph.cpp), so every index synthesis reads is in range.
 GraphTables read_graph_tables(const Asset& asset);
 
 }  // namespace mbk

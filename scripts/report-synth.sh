@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The report of multiscale synthesis from exemplar graphs ([Han08] thesis chs. 4-5; issue 7): generates the
-# exemplars with `microbake gen` (64 x 64 normal maps: bumps, leather, scratches) into examples/generated/, analyses
+# The report of multiscale synthesis from exemplar graphs ([Han08] thesis chs. 4-5; issue 7): makes the exemplars
+# (examples/make_synth_exemplars.sh: 64 x 64 normal maps bumps, leather, scratches), analyses
 # the graphs of examples/graphs/ (a 3-exemplar chain, a self-loop zoom, the root alone), writes the gallery
 # (examples/results/synth/*.png: the chain at three levels, a zoom sequence of 16x steps, the root alone) and the
 # numbers: analysis time, final-level megapixels per second on 2 threads and on 1, an 8k x 8k synthesis as 16 tiles
@@ -17,13 +17,10 @@ exe="$build/microbake"
 [ -x "$exe" ] || { echo "report: $exe not found (build first: scripts/build.sh $build)" >&2; exit 2; }
 command -v oiiotool >/dev/null || { echo "report: oiiotool is needed (scripts/install-deps.sh installs it)" >&2; exit 2; }
 out=examples/results/synth
-gen=examples/generated
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-mkdir -p "$out" "$gen"
-"$exe" gen bumps --size 64 --seed 1 -q -o "$gen/synth_bumps64.png"
-"$exe" gen leather --size 64 --seed 2 -q -o "$gen/synth_leather64.png"
-"$exe" gen scratches --size 64 --seed 3 -q -o "$gen/synth_scratches64.png"
+mkdir -p "$out"
+examples/make_synth_exemplars.sh "$exe"
 
 seconds() { sed -n 's/.* \([0-9.]*\) s (.*/\1/p'; }              # synthesis seconds from synth's summary
 analysis() { sed -n 's/.*analysis \([0-9.]*\) s.*/\1/p'; }
@@ -97,7 +94,8 @@ sub-passes, jitter 1, 0.6, 0.4, 0.3, ...).
 | chain, 1024 x 1024 at level 10, 1 thread | $(echo "$one" | seconds) s, $(echo "$one" | mps) megapixels/s (same bytes as 2 threads) |
 | threads speed-up, 2 / 1 | $(python3 -c "print('%.2f' % ($(echo "$two" | mps) / $(echo "$one" | mps)))") |
 | root alone, the same window | $(echo "$alone" | seconds) s, $(echo "$alone" | mps) megapixels/s |
-| detail at the finest octave (RMSE of the window against its 2x box blur): chain / root alone | ${detail_chain} / ${detail_alone} |
+| detail at the finest octave (RMSE of the window against its 2x box blur): chain / root alone | ${detail_chain} / ${detail_alone} ($(python3 -c "print('%.1f' % ($detail_chain / $detail_alone))")x) |
+| root alone speed over the chain's, the same window | $(python3 -c "print('%.1f' % ($(echo "$alone" | mps) / $(echo "$two" | mps)))")x (past level 6 it only magnifies) |
 | 8192 x 8192 at level 10 as 16 tiles of 2048 x 2048 (2 threads, one process per tile) | ${tiles_s} s in all, $(python3 -c "print('%.2f' % (8192 * 8192 / 1e6 / $tiles_s))") megapixels/s |
 | peak memory of one 2048 x 2048 tile (max RSS) | $((peak / 1024)) MiB |
 | tile corners against separately synthesized 8 x 8 windows (largest difference) | ${seam}, ${seam2} |

@@ -102,7 +102,7 @@ void check_edge_scales(const ExemplarGraph& graph, uint32_t L, const std::string
     if (graph.edges[i].r >= L)
       throw Error(ExitCode::invalid_input,
                   "r = " + std::to_string(graph.edges[i].r) + " must be below r_max = L = " + std::to_string(L) +
-                      " for exemplars of 2^L texels a side (no stack level would have a destination level)",
+                      " for exemplars of 2^L texels a side (r_max = L keeps source and destination scales overlapping)",
                   file + ": " + json_index_path("edges", i) + ".r");
 }
 

@@ -13,8 +13,10 @@
 // Normal-map exemplars are decoded and renormalised as every baker reads normal maps (libbake/image/normal_map.h),
 // analysed as vectors, and synthesized as unit normals.
 // Exemplars are images OpenImageIO reads (colour images or normal maps), all of one size m x m with m = 2^L a
-// power of two in [4, 4096] (Sec. 4.1 assumes m = 2^L) and one channel count. r is an integer, 0 <= r < L
-// (r_max = L: with r >= L no stack level of the source has a destination level, Sec. 5.2.1.2); an explicit edge
+// power of two in [16, 1024] (Sec. 4.1 assumes m = 2^L; below 16 the 5 x 5 neighbourhoods wrap round the torus,
+// above 1024 the analysis holds gigabytes per exemplar) and one channel count. r is an integer, 0 <= r < L
+// (r_max = L: with r = L only the source's finest level would see the destination's coarsest, too little
+// overlap to reconstruct the scales between, Sec. 4.1); an explicit edge
 // (i, i, 0) repeats the implicit one and is refused, as are duplicate edges. Every exemplar must be reachable from
 // the root.
 #pragma once

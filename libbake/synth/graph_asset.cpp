@@ -14,7 +14,7 @@ LoadedExemplars load_graph_exemplars(const ExemplarGraph& graph, const std::stri
   for (const ExemplarGraph::Exemplar& e : graph.exemplars) {
     const std::string where = e.path.string() + " (exemplar '" + e.id + "' of " + graph_file + ")";
     ImageFileInfo info;
-    const ImageHeader header = read_image_header_within(e.path, 4096, "exemplar '" + e.id + "'");
+    const ImageHeader header = read_image_header_within(e.path, 1024, "exemplar '" + e.id + "'");
     Image im;
     nlohmann::json record;
     if (graph.normal_map) {  // decoded and renormalised like every baker's input; stored as vectors
@@ -35,10 +35,10 @@ LoadedExemplars load_graph_exemplars(const ExemplarGraph& graph, const std::stri
                 {"channels", info.file_channels},
                 {"pixel_format", info.pixel_format}};
     }
-    if (im.width != im.height || im.width < 4 || exact_log2(im.width) < 0)
+    if (im.width != im.height || im.width < 16 || exact_log2(im.width) < 0)
       throw Error(ExitCode::invalid_input,
                   "exemplar is " + std::to_string(im.width) + "x" + std::to_string(im.height) +
-                      "; exemplars must be square with a power-of-two side in [4, 4096]",
+                      "; exemplars must be square with a power-of-two side in [16, 1024]",
                   where);
     if (im.channels < 1 || im.channels > 4)
       throw Error(ExitCode::invalid_input, "exemplar has " + std::to_string(im.channels) + " channels (1..4)", where);
@@ -48,7 +48,7 @@ LoadedExemplars load_graph_exemplars(const ExemplarGraph& graph, const std::stri
                       std::to_string(im.channels) + " channels, but '" + graph.exemplars[0].id + "' is " +
                       std::to_string(out.images[0].width) + "x" + std::to_string(out.images[0].width) + " with " +
                       std::to_string(out.images[0].channels) +
-                      ": every exemplar of a graph has one size and channel count",
+                      " channels: every exemplar of a graph has one size and channel count",
                   where);
     for (size_t i = 0; i < im.pixels.size(); ++i)
       if (!std::isfinite(im.pixels[i]))

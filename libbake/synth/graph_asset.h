@@ -1,7 +1,7 @@
 // Baking asset kind `graph` (formats/SPEC.md "Kind 9: graph"; formats/graph_layout.h) from an exemplar graph file:
 // the exemplars are read (any image OpenImageIO reads, values as stored: integer formats in [0, 1], floats as they
 // are; normal-map graphs decoded to unit +Y vectors as every baker reads normal maps), checked (one square power-of-two
-// size in [4, 4096], one channel count in 1..4, finite values, every edge's r < L), analysed (graph_analysis.h) and
+// size in [16, 1024], one channel count in 1..4, finite values, every edge's r < L), analysed (graph_analysis.h) and
 // written with their input records.
 #pragma once
 

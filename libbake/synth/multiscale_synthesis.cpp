@@ -51,7 +51,9 @@ class Synthesizer {
           Region{floor_div2(c.x0) - 1, floor_div2(c.y0) - 1, floor_div2(c.x1 - 1) + 2, floor_div2(c.y1 - 1) + 2}.grown(
               pad);
     }
-    progress.start("synthesis", uint64_t(o_.level) + 1);
+    uint64_t work = 0;  // pixels over all levels: the finest level is most of it
+    for (const Region& r : region) work += uint64_t(r.width() * r.height());
+    progress.start("synthesis", work);
     std::vector<Pixel> level(size_t(region[0].width() * region[0].height()));
     for (Pixel& p : level) p.e = g_.layout.root;  // texel (0, 0) of the root's level 0
     for (uint32_t t = 0; t <= o_.level; ++t) {
@@ -59,11 +61,8 @@ class Synthesizer {
       jitter(level, region[t], t);
       for (uint32_t pass = 0; pass < o_.passes; ++pass)
         for (int parity = 0; parity < 4; ++parity) correct(level, region[t], parity);
-      if (stats) {
-        stats->pixels_computed += level.size();
-        stats->matching_error.push_back(mean_error(level, region[t]));
-      }
-      progress.advance();
+      if (stats) stats->matching_error.push_back(mean_error(level, region[t]));
+      progress.advance(level.size());
     }
     progress.finish();
     const uint32_t C = g_.layout.channels;
@@ -107,10 +106,11 @@ class Synthesizer {
         const double dx = (x - 2 * floor_div2(x)) - 0.5, dy = (y - 2 * floor_div2(y)) - 0.5;
         c.x = wrap(int64_t(parent.x) + int64_t(std::floor(h * dx)), m);
         c.y = wrap(int64_t(parent.y) + int64_t(std::floor(h * dy)), m);
-        // R bilinear in the four nearest parents: the child's centre at parent coordinates (x + 1/2) / 2 - 1/2.
-        const double fx = (double(x) + 0.5) / 2.0 - 0.5, fy = (double(y) + 0.5) / 2.0 - 0.5;
-        const int64_t px = int64_t(std::floor(fx)), py = int64_t(std::floor(fy));
-        const double ax = fx - double(px), ay = fy - double(py);
+        // R bilinear in the four nearest parents: the child's centre at parent coordinates (x + 1/2) / 2 - 1/2,
+        // in integers (exact at any position): an even child 2a sits between parents a - 1 and a at weight 3/4
+        // on a, an odd child 2a + 1 between a and a + 1 at weight 1/4 on a + 1.
+        const int64_t px = floor_div2(x) - ((x & 1) == 0 ? 1 : 0), py = floor_div2(y) - ((y & 1) == 0 ? 1 : 0);
+        const double ax = (x & 1) == 0 ? 0.75 : 0.25, ay = (y & 1) == 0 ? 0.75 : 0.25;
         for (uint32_t ch = 0; ch < C; ++ch)
           c.R[ch] = float(
               (1 - ax) * (1 - ay) * at(parents, pr, px, py).R[ch] + ax * (1 - ay) * at(parents, pr, px + 1, py).R[ch] +
@@ -128,7 +128,9 @@ class Synthesizer {
       for (int64_t x = r.x0; x < r.x1; ++x) {
         Pixel& p = s[size_t((y - r.y0) * r.width() + (x - r.x0))];
         if (stuck(p)) continue;  // below one texel of spacing there is nothing to jitter by
-        const uint32_t h = hash4(o_.seed, t, uint32_t(x), uint32_t(y));
+        // Both halves of the 64-bit coordinates: no period of 2^32 pixels.
+        const uint32_t h = hash4(hash_combine(o_.seed, t), uint32_t(x) ^ pcg_hash(uint32_t(uint64_t(x) >> 32)),
+                                 uint32_t(y), pcg_hash(uint32_t(uint64_t(y) >> 32)));
         const double hx = 2.0 * unit_from_hash(h) - 1.0, hy = 2.0 * unit_from_hash(pcg_hash(h ^ 0x6a09e667u)) - 1.0;
         const double hk = spacing(p.k);
         p.x = wrap(int64_t(p.x) + int64_t(std::floor(hk * hx * rt + 0.5)), m);
@@ -265,8 +267,15 @@ Image synthesize_window(const GraphTables& graph, const SynthesisOptions& option
                         SynthesisStatistics* statistics) {
   if (options.width == 0 || options.height == 0)
     throw Error(ExitCode::bad_command_line, "the window must have a positive width and height");
-  if (uint64_t(options.width) * options.height > (uint64_t(1) << 28))
-    throw Error(ExitCode::bad_command_line, "the window may hold at most 2^28 pixels: synthesize it as tiles");
+  // ~100 bytes per pixel of the padded finest region (pointers, offsets, a copy per sub-pass): 2^24 pixels (a
+  // 4096 x 4096 window) stays under 2 GB; larger images are tiles, which are exact.
+  if (uint64_t(options.width) * options.height > (uint64_t(1) << 24))
+    throw Error(ExitCode::bad_command_line,
+                "the window may hold at most 2^24 pixels (4096 x 4096): synthesize it as tiles");
+  constexpr int64_t kMaxCoordinate = int64_t(1) << 62;  // regions grow by padding and halve: no overflow below this
+  if (options.x < -kMaxCoordinate || options.y < -kMaxCoordinate || options.x > kMaxCoordinate - options.width ||
+      options.y > kMaxCoordinate - options.height)
+    throw Error(ExitCode::bad_command_line, "the window must lie within +-2^62 pixels");
   if (options.level > kMaxLevel)
     throw Error(ExitCode::bad_command_line, "--level must be at most " + std::to_string(kMaxLevel));
   if (options.jitter.empty()) throw Error(ExitCode::bad_command_line, "--jitter needs at least one value");

@@ -5,10 +5,12 @@
 // texel u) and a cumulative constant-offset transfer R (Sec. 5.3); the pixel's colour is E^i_k[u] + R.
 //   level 0: every pixel points at texel (0, 0) of the root's level 0 (the exemplar's mean), R = 0;
 //   upsampling (Sec. 5.2.2.1): child 2p + D + (1/2, 1/2), D in {-1/2, +1/2}^2, gets (i, k + 1, u + floor(h_{k+1} D)
-//     mod m); a pixel stuck at the finest level L (its exemplar has no admissible level there, so correction
-//     cannot move it on) passes its texel to its four children and is not jittered: it magnifies its exemplar
-//     (nearest texel); R is bilinear in the four nearest parents' R (the thesis: piecewise-constant inheritance
-//     blocks);
+//     mod m) (Deviation [Han08]: the thesis writes h_k, the parent's spacing; h_{k+1}, as Lefebvre & Hoppe, puts
+//     the children one child texel apart, which is what keeps coherent patches coherent: test
+//     MultiscaleSynthesis.SelfLoopZoomTenLevelsDeepStaysCoherent); a pixel stuck at the finest level L (its exemplar
+//     has no admissible level there, so correction cannot move it on) passes its texel to its four children and is not
+//     jittered: it magnifies its exemplar (nearest texel); R is bilinear in the four nearest parents' R (the thesis:
+//     piecewise-constant inheritance blocks);
 //   jitter (Sec. 5.2.2.2): u += floor(h_k H(p) r_t + (1/2, 1/2)) mod m, H a PCG hash of (seed, t, p) into [-1, 1]^2,
 //     r_t the level's randomness (options.jitter[t], the last value repeating);
 //   correction (Sec. 5.2.2.3, Eq. 5.1 with k-coherence, Eq. 5.3): `passes` passes of four sub-passes over the pixel
@@ -47,7 +49,6 @@ struct SynthesisOptions {
 
 struct SynthesisStatistics {
   std::vector<double> matching_error;  // per level: mean over the window's region of the best Eq. 5.1 error / 25
-  uint64_t pixels_computed = 0;        // over all levels, regions included
 };
 
 // The window's colours (channels as the graph's exemplars); for a normal-map graph, unit +Y normals.

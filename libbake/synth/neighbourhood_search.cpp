@@ -9,7 +9,7 @@
 namespace mbk {
 
 std::vector<uint32_t> nearest_neighbours(const std::vector<float>& points, const std::vector<float>& queries,
-                                         uint32_t dims, uint32_t k, std::vector<float>* distances) {
+                                         uint32_t dims, uint32_t k) {
   const size_t n = points.size() / dims, q = queries.size() / dims;
   k = uint32_t(std::min<size_t>(k, n));
   std::vector<uint32_t> out(q * k);
@@ -34,13 +34,7 @@ std::vector<uint32_t> nearest_neighbours(const std::vector<float>& points, const
              (dist[i * k + a] == dist[i * k + b] && raw[i * k + a] < raw[i * k + b]);
     });
     for (uint32_t j = 0; j < k; ++j) out[i * k + j] = uint32_t(raw[i * k + order[j]]);
-    if (distances) {
-      std::vector<float> sorted(k);
-      for (uint32_t j = 0; j < k; ++j) sorted[j] = dist[i * k + order[j]];
-      std::copy(sorted.begin(), sorted.end(), dist.begin() + i * k);
-    }
   }
-  if (distances) *distances = std::move(dist);
   return out;
 }
 

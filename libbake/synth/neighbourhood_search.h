@@ -9,8 +9,8 @@
 namespace mbk {
 
 // points: n x dims row-major; queries: q x dims. Returns q x k indices into points, nearest first (ties by index);
-// k is clamped to n. Squared L2 distances in `distances` when given (same layout).
+// k is clamped to n.
 std::vector<uint32_t> nearest_neighbours(const std::vector<float>& points, const std::vector<float>& queries,
-                                         uint32_t dims, uint32_t k, std::vector<float>* distances = nullptr);
+                                         uint32_t dims, uint32_t k);
 
 }  // namespace mbk

@@ -10,6 +10,7 @@
 #include <random>
 
 #include "formats/asset.h"
+#include "formats/error.h"
 #include "libbake/core/parallel.h"
 #include "libbake/synth/graph_asset.h"
 #include "libbake/synth/multiscale_synthesis.h"
@@ -80,6 +81,55 @@ TEST(MultiscaleSynthesis, TilesEqualTheWholeWindowBitForBit_LevelsAndThreads) {
       }
     }
   set_thread_count(threads);
+}
+
+// The same with transfers at work (an inconsistent two-exemplar graph), far from the origin (where a float
+// computation of the transfer interpolation or a 32-bit hash would break), and with 1 and 3 passes (other paddings).
+TEST(MultiscaleSynthesis, TilesEqualTheWholeFarAwayWithTransfersAndOtherPassCounts) {
+  ExemplarGraph g;
+  g.exemplars = {{"a", "a.png", "a.png"}, {"b", "b.png", "b.png"}};
+  g.edges = {{0, 1, 1}, {1, 1, 1}};
+  const GraphTables t = tables_of(g, {blobs(16, 5), blobs(16, 6, 0.3f)});
+  for (const int64_t origin : {int64_t(-1) << 40, (int64_t(1) << 62) - 64})
+    for (const uint32_t passes : {1u, 3u}) {
+      SynthesisOptions o;
+      o.level = 7;
+      o.passes = passes;
+      o.x = origin;
+      o.y = -origin / 2;
+      o.width = 20;
+      o.height = 12;
+      const Image whole = synthesize_window(t, o, Progress::silent());
+      SynthesisOptions tile = o;
+      tile.x = o.x + 7;
+      tile.y = o.y + 5;
+      tile.width = 9;
+      tile.height = 6;
+      const Image part = synthesize_window(t, tile, Progress::silent());
+      for (uint32_t y = 0; y < tile.height; ++y)
+        for (uint32_t x = 0; x < tile.width; ++x)
+          for (uint32_t c = 0; c < 3; ++c)
+            ASSERT_EQ(part.at(x, y, c), whole.at(x + 7, y + 5, c)) << "origin " << origin << ", passes " << passes;
+    }
+  // No 2^32 period: a window 2^42 pixels away is another part of the texture.
+  SynthesisOptions near_origin, far;
+  near_origin.level = far.level = 7;
+  near_origin.width = far.width = near_origin.height = far.height = 8;
+  far.x = int64_t(1) << 42;
+  EXPECT_NE(synthesize_window(t, near_origin, Progress::silent()).pixels,
+            synthesize_window(t, far, Progress::silent()).pixels);
+}
+
+TEST(MultiscaleSynthesis, WindowsOutsideTheLimitsAreCommandLineErrors) {
+  const GraphTables t = tables_of(self_loop_graph(), {blobs(16, 1)});
+  SynthesisOptions o;
+  o.x = (int64_t(1) << 62) - 3;
+  o.width = 4;
+  EXPECT_THROW(synthesize_window(t, o, Progress::silent()), Error);
+  o.x = 0;
+  o.width = 8192;
+  o.height = 4096;
+  EXPECT_THROW(synthesize_window(t, o, Progress::silent()), Error);
 }
 
 double variance_of(const Image& im, uint32_t c) {
