@@ -15,6 +15,7 @@
 // sigma^2 = alpha^2 / 4) and Blinn-Phong s to s' = kappa s / (kappa + s) (Eq. 7.20).
 #pragma once
 
+#include <algorithm>
 #include <functional>
 #include <span>
 #include <vector>
@@ -68,6 +69,11 @@ double toksvig_beckmann_alpha(double alpha, double mean_length);
 // alpha = inf (inf / inf) while Beckmann's vanishes; alpha = 1 (a slope deviation of 0.7 per axis) is already a
 // near-flat lobe and the roughest a scene may ask for (test: FilteredNdfEffects.CancellingNormalsStayFinite).
 inline constexpr double kMaxFilteredAlpha = 1.0;
+// The roughness a filtered shader hands to the BRDF: the widened alpha capped at kMaxFilteredAlpha, never below
+// the material's own alpha (a material rougher than the cap keeps its roughness). NaN widened gives the cap.
+inline double clamp_filtered_alpha(double alpha, double widened) {
+  return std::max(alpha, std::min(kMaxFilteredAlpha, widened));
+}
 
 // [Han07] Eqs. (7.23), (7.24): the shading of one vMF lobe (kappa, mu) under distant light given as SH
 // coefficients light_lm (one channel; order from light.size() = (L + 1)^2):

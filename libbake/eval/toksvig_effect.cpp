@@ -20,8 +20,7 @@ class ToksvigShader : public MaterialShader {
     // As material_normals.cpp: a mean shorter than 1e-6 has lost its direction (and its lobe is flat).
     const Vec3 n = len > 1e-6 ? Vec3(m / len) : Vec3::UnitZ();
     Brdf widened = brdf;
-    widened.lobe.alpha =
-        std::max(brdf.lobe.alpha, std::min(kMaxFilteredAlpha, toksvig_beckmann_alpha(brdf.lobe.alpha, len)));
+    widened.lobe.alpha = clamp_filtered_alpha(brdf.lobe.alpha, toksvig_beckmann_alpha(brdf.lobe.alpha, len));
     return shade(*c.lighting, widened, {c.position, c.frame.N, c.frame.to_world(n).normalized(), c.to_viewer});
   }
 

@@ -29,8 +29,7 @@ class VmfShader : public MaterialShader {
       if (!(lobe.alpha > 0.0)) continue;
       lobe.mu = facing_viewer(f.to_world(lobe.mu).normalized(), v);
       Brdf b = brdf;
-      b.lobe.alpha = std::max(brdf.lobe.alpha,
-                              std::min(kMaxFilteredAlpha, vmf_filtered_beckmann_alpha(brdf.lobe.alpha, lobe.kappa)));
+      b.lobe.alpha = clamp_filtered_alpha(brdf.lobe.alpha, vmf_filtered_beckmann_alpha(brdf.lobe.alpha, lobe.kappa));
       lobes.push_back(lobe);
       widened.push_back(b);
     }
