@@ -170,9 +170,10 @@ TEST(FilteredNdfEffects, RecedingPlaneIsCloserToTheReferenceThanPlainMip) {
   const double sh = error({{"name", "sh"}, {"order", 16}}), vmf = error({{"name", "vmf"}, {"lobes", 4}});
   std::cout << "rmse vs reference: mip " << mip << ", toksvig " << toksvig << ", sh16 " << sh << ", vmf4 " << vmf
             << " (mean " << mean(reference) << ")\n";
-  EXPECT_LT(sh, 0.8 * mip);
-  EXPECT_LT(vmf, 0.8 * mip);
-  EXPECT_LT(toksvig, mip);
+  // Measured: mip 0.93, toksvig 0.50, sh16 0.54, vmf4 0.47 (mean 0.38); the bounds leave ~10% of margin.
+  EXPECT_LT(sh, 0.65 * mip);
+  EXPECT_LT(vmf, 0.6 * mip);
+  EXPECT_LT(toksvig, 0.6 * mip);
 }
 
 TEST(FilteredNdfEffects, CancellingNormalsStayFinite) {
