@@ -49,6 +49,12 @@ void delta_ndf_coefficients(const ShBasisEvaluator& basis, const Vec3& n, std::s
 // [Han07] Eq. (7.14) with exact band factors: sum_j alpha_j sum_l rhat_l Lambda_l(kappa_j) (2l + 1) / (4 pi)
 // P_l(w . mu_j), Lambda_l the Bessel ratios of libbake/core/vmf_lobe.h (not Eq. 7.19's exp(-l^2 / 2 kappa)).
 double vmf_filtered_brdf(std::span<const VmfLobeShape> lobes, std::span<const double> rhat, const Vec3& w);
+// The per-lobe factor of Eqs. (7.14) and (7.23): rhat_l Lambda_l(kappa) for l = 0..rhat.size() - 1. Shaders compute
+// it once per lobe per pixel and reuse it for every light and colour channel (the band factors are the costly part).
+std::vector<double> vmf_filtered_rhat(std::span<const double> rhat, double kappa);
+// Eq. (7.14) with filtered[j] = vmf_filtered_rhat(rhat, lobes[j].kappa) precomputed (same result as above).
+double vmf_filtered_brdf(std::span<const VmfLobeShape> lobes, std::span<const std::vector<double>> filtered,
+                         const Vec3& w);
 
 // [Han07] Eq. (7.20): the exponent of a normalised Blinn-Phong lobe of exponent s convolved with a vMF lobe.
 double vmf_filtered_blinn_phong_exponent(double s, double kappa);
@@ -81,5 +87,7 @@ inline double clamp_filtered_alpha(double alpha, double widened) {
 // With Lambertian rhat this is the filtered irradiance; for specular light pass the half-vector
 // reparameterised lighting L'(w_h) = L(w_i) 4 (w_i . w_h) of Eq. (7.24).
 double vmf_sh_lighting(std::span<const double> light, std::span<const double> rhat, double kappa, const Vec3& mu);
+// The same with filtered = vmf_filtered_rhat(rhat, kappa) and y_mu = Y_lm(mu) (size >= light.size()) precomputed.
+double vmf_sh_lighting(std::span<const double> light, std::span<const double> filtered, std::span<const double> y_mu);
 
 }  // namespace mbk
