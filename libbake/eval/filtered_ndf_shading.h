@@ -81,11 +81,12 @@ inline double clamp_filtered_alpha(double alpha, double widened) {
   return std::max(alpha, std::min(kMaxFilteredAlpha, widened));
 }
 
-// [Han07] Eqs. (7.23), (7.24): the shading of one vMF lobe (kappa, mu) under distant light given as SH
-// coefficients light_lm (one channel; order from light.size() = (L + 1)^2):
+// [Han07] Eq. (7.23): the shading of one vMF lobe (kappa, mu) under distant light given as SH coefficients light_lm
+// (one channel; order from light.size() = (L + 1)^2):
 //     B = sum_l rhat_l Lambda_l(kappa) sum_m light_lm Y_lm(mu).
-// With Lambertian rhat this is the filtered irradiance; for specular light pass the half-vector
-// reparameterised lighting L'(w_h) = L(w_i) 4 (w_i . w_h) of Eq. (7.24).
+// With Lambertian rhat this is the filtered irradiance (the vmf shader's distant diffuse). Eq. (7.24), the same
+// sum for specular light reparameterised about the half vector, is not implemented: the shaders use the
+// renderer's distant-specular lobe instead (deviation [Han07], stated in sh_effect.h and vmf_effect.h).
 double vmf_sh_lighting(std::span<const double> light, std::span<const double> rhat, double kappa, const Vec3& mu);
 // The same with filtered = vmf_filtered_rhat(rhat, kappa) and y_mu = Y_lm(mu) (size >= light.size()) precomputed.
 double vmf_sh_lighting(std::span<const double> light, std::span<const double> filtered, std::span<const double> y_mu);
