@@ -48,8 +48,8 @@ Asset bake_effect(const test::ScratchDir& dir, const json& effect) {
 }
 
 struct CoarseTexel {
-  Vec2 uv;                     // its centre
-  std::vector<Vec3> normals;   // the finest normals it covers
+  Vec2 uv;                    // its centre
+  std::vector<Vec3> normals;  // the finest normals it covers
 };
 
 CoarseTexel coarse_texel(int level, uint32_t i, uint32_t row) {
@@ -101,7 +101,8 @@ double relative_error(const CoarseTexel& t, Filtered filtered, Brute brute) {
 
 TEST(FilteredNdfCoarseLevel, ShMatchesBruteForceOverTheTexelsNormals) {
   test::ScratchDir dir("filtered_coarse_sh");
-  const ShNdfTexture tex = ShNdfTexture::from_asset(bake_effect(dir, {{"name", "sh"}, {"order", 24}, {"precision", "f32"}}));
+  const ShNdfTexture tex =
+      ShNdfTexture::from_asset(bake_effect(dir, {{"name", "sh"}, {"order", 24}, {"precision", "f32"}}));
   const ShBasisEvaluator basis(tex.order());
   const std::vector<double> rhat_d = lambertian_rhat(tex.order()), rhat_s = microfacet_rhat(kBase, tex.order());
   std::vector<double> g(size_t(basis.count()));
@@ -156,8 +157,9 @@ TEST(FilteredNdfCoarseLevel, VmfMatchesBruteForceOverTheTexelsNormals) {
       EXPECT_LT(diffuse, 1e-3) << "level " << level << " texel " << i << "," << row;
       const double factors[3] = {1.0, 2.0, 4.0};
       for (int f = 0; f < 3; ++f)
-        worst_at[f] = std::max(
-            worst_at[f], relative_error(t, [&](const Vec3& h) { return vmf_specular(lobes, h, factors[f]); }, brute_d));
+        worst_at[f] =
+            std::max(worst_at[f], relative_error(
+                                      t, [&](const Vec3& h) { return vmf_specular(lobes, h, factors[f]); }, brute_d));
     }
   std::cout << "vmf4 specular, worst relative error with variance factor 1, 2, 4: " << worst_at[0] << ", "
             << worst_at[1] << ", " << worst_at[2] << "\n";
