@@ -1,24 +1,31 @@
 #!/usr/bin/env bash
 # Accuracy against ground truth of the normal-map filtering effects ([Han07] Sec. 7; issue 4, section 5): renders
 # examples/scenes/filtering_plane.json (a plane receding to the horizon) and filtering_spheres.json (spheres at
-# three distances), footprints from ~1 texel to beyond 256, for a generated map (`gen bumps`, 256^2) and a real
-# one (../shared/data/real/brushed_streaks_diagonal.png, 512^2, -Y; read in place, never copied; skipped when
-# absent), with plain mip, toksvig, sh (orders 2, 4, 8, 16) and vmf (J = 1, 2, 4, 6, 8), and `render --reference`
-# as the ground truth. Per method: bake time and file size (`microbake bake` of that effect alone), render time
-# and RMSE against the reference (`microbake compare --format json`), on the whole image and on the plane's far
-# field (the rows just below the horizon, where footprints are largest). Writes the results block of
+# three distances) under point and directional lights, and the same spheres under an environment map alone (a
+# lat-long EXR with band-1 and band-2 content the script makes with oiiotool: [Han07] Eq. 7.23 is what shades
+# it), for a generated map (`gen bumps`, 256^2) and three real ones from ../shared/data/real/ (read in place,
+# never copied; each skipped when absent): brushed_streaks_diagonal.png (anisotropic), metallic_flakes.png and
+# scifi_panel_bevels.png (multi-lobe texels: flakes with their own tilts, bevels), all -Y, loaded with
+# `repair` (metallic_flakes has a texel with z < 0). Methods: plain mip, toksvig, sh (orders 2, 4, 8, 16) and vmf
+# (J = 1, 2, 4, 6, 8), rendered with --spp SPP (default 4: at 1 sample per pixel the spheres' error is mostly
+# silhouette aliasing against the 16 x 16 reference), and `render --reference` as the ground truth. Per method:
+# bake time and file size (`microbake bake` of that effect alone), render time and RMSE against the reference
+# (`microbake compare --format json`) on the whole image, on the plane's far field (the rows just below the
+# horizon) and on an interior crop of each sphere (no silhouette: near ~1.5, middle ~5, far ~60 texels per
+# pixel on the 256^2 map, twice that on the 512^2 ones). Writes the results block of
 # examples/results/filtering/REPORT.md (between its accuracy markers), the plot accuracy.png (gnuplot) and
 # side-by-side pictures (oiiotool), installing gnuplot-nox and openimageio-tools through scripts/install-deps.sh.
 #
-#   bash scripts/report-filtering.sh [BUILD_DIR] [REFERENCE_N]   # default build/ and 16 (16 x 16 rays per pixel)
+#   bash scripts/report-filtering.sh [BUILD_DIR] [REFERENCE_N] [SPP]   # default build/, 16 (16 x 16 rays), 4
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build="${1:-build}"
 ref_n="${2:-16}"
+spp="${3:-4}"
 exe="$build/microbake"
 results=examples/results/filtering
 report=$results/REPORT.md
-real_map=../shared/data/real/brushed_streaks_diagonal.png
+real=../shared/data/real
 [ -x "$exe" ] || { echo "report-filtering: $exe not found (build first: scripts/build.sh $build)" >&2; exit 2; }
 bash scripts/install-deps.sh gnuplot-nox openimageio-tools
 work=$(mktemp -d)
@@ -27,8 +34,13 @@ trap 'rm -rf "$work"' EXIT
 now() { date +%s.%N; }
 elapsed() { printf '%.2f' "$(echo "$(now) - $1" | bc -l)"; }
 rmse() { "$exe" compare "$1" "$2" --format json | python3 -c 'import json, sys; print("%.4f" % json.load(sys.stdin)["rmse"])'; }
-# The plane's far field: 24 rows from the horizon (row 66 of 144) down.
-far_field() { oiiotool "$1" --cut 240x24+0+66 -o "$2"; }
+# Crops (oiiotool geometry): the plane's far field, 24 rows from the horizon (row 66 of 144) down; the interior
+# of each sphere (inside ~0.6 of its projected radius: no silhouette pixel).
+declare -A crops=([far]=240x24+0+66 [near]=56x56+29+44 [mid]=16x16+154+58 [distant]=6x6+191+49)
+crop_rmse() { # IMAGE REFERENCE CROP
+  oiiotool "$1" --cut "${crops[$3]}" -o "$work/a.exr" && oiiotool "$2" --cut "${crops[$3]}" -o "$work/b.exr"
+  rmse "$work/a.exr" "$work/b.exr"
+}
 
 # name | effect JSON
 methods=(
@@ -45,64 +57,83 @@ methods=(
   'vmf8|{"name": "vmf", "lobes": 8, "tolerance": 1e-4}'
 )
 
-# scene_for SCENE MAP CONVENTION EFFECT OUT: the example scene with its map and effect replaced.
+# The environment: a 64 x 32 lat-long map, bright sky towards one azimuth fading to a dark ground (bands 1, 2).
+oiiotool --pattern fill:topleft=2.0,1.8,1.5:topright=0.3,0.4,0.6:bottomleft=0.15,0.12,0.1:bottomright=0.02,0.02,0.03 \
+  64x32 3 -d float -o "$work/environment.exr"
+
+# scene_for SCENE MAP CONVENTION EFFECT OUT [env]: the example scene with its map and effect replaced (and with
+# "env", its lights replaced by the environment map alone).
 scene_for() {
-  python3 - "$@" <<'PY'
+  python3 - "$@" "$work/environment.exr" <<'PY'
 import json, os, sys
-scene, path, convention, effect, out = sys.argv[1:]
+scene, path, convention, effect, out = sys.argv[1:6]
+env = sys.argv[6] == "env"
 s = json.load(open(scene))
 for m in s["materials"].values():
-    m["normal_map"] = {"path": os.path.abspath(path), "convention": convention}
+    m["normal_map"] = {"path": os.path.abspath(path), "convention": convention, "repair": True}
     m["effects"] = [json.loads(effect)]
+if env:
+    s["lights"] = [{"type": "environment", "path": sys.argv[-1]}]
 json.dump(s, open(out, "w"), indent=1)
 PY
 }
+scene_file() { [ "$1" = env ] && echo examples/scenes/filtering_spheres.json || echo "examples/scenes/filtering_$1.json"; }
+scene_mode() { [ "$1" = env ] && echo env || echo plain; }
 
 maps=("bumps|$work/bumps.png|+Y")
 "$exe" gen bumps --size 256 -q -o "$work/bumps.png"
-if [ -f "$real_map" ]; then
-  maps+=("brushed_streaks|$real_map|-Y")
-else
-  echo "report-filtering: $real_map absent: the real map is skipped" >&2
-fi
+for real_map in brushed_streaks_diagonal metallic_flakes scifi_panel_bevels; do
+  if [ -f "$real/$real_map.png" ]; then
+    maps+=("$real_map|$real/$real_map.png|-Y")
+  else
+    echo "report-filtering: $real/$real_map.png absent: that map is skipped" >&2
+  fi
+done
 
 rows=""
+reference_times=""
 data="$work/accuracy.dat"
 : >"$data"
 for entry in "${maps[@]}"; do
   IFS='|' read -r map path convention <<<"$entry"
-  for scene in plane spheres; do
-    scene_for "examples/scenes/filtering_$scene.json" "$path" "$convention" '"mip"' "$work/$map.$scene.ref.json"
+  ref_line="| $map |"
+  for scene in plane spheres env; do
+    scene_for "$(scene_file $scene)" "$path" "$convention" '"mip"' "$work/$map.$scene.ref.json" "$(scene_mode $scene)"
     t=$(now)
     "$exe" render "$work/$map.$scene.ref.json" --reference "$ref_n" -q -o "$work/$map.$scene.ref.exr"
+    ref_line+=" $(elapsed "$t") |"
     echo "report-filtering: $map $scene reference (${ref_n}x$ref_n) $(elapsed "$t") s" >&2
   done
-  far_field "$work/$map.plane.ref.exr" "$work/$map.plane.ref.far.exr"
+  reference_times+="$ref_line"$'\n'
   echo "\"$map\"" >>"$data"
   for m in "${methods[@]}"; do
     IFS='|' read -r name effect <<<"$m"
-    for scene in plane spheres; do scene_for "examples/scenes/filtering_$scene.json" "$path" "$convention" "$effect" "$work/$map.$scene.$name.json"; done
+    for scene in plane spheres env; do
+      scene_for "$(scene_file $scene)" "$path" "$convention" "$effect" "$work/$map.$scene.$name.json" "$(scene_mode $scene)"
+    done
     assets="$work/assets.$map.$name"
     t=$(now)
     "$exe" bake "$work/$map.plane.$name.json" --out-dir "$assets" -q
     bake_s=$(elapsed "$t")
     bytes=$(cat "$assets"/*.mbk | wc -c)
     declare -A render_s=() err=()
-    for scene in plane spheres; do
+    for scene in plane spheres env; do
       t=$(now)
-      "$exe" render "$work/$map.$scene.$name.json" --assets "$assets" -q -o "$work/$map.$scene.$name.exr"
+      "$exe" render "$work/$map.$scene.$name.json" --assets "$assets" --spp "$spp" -q -o "$work/$map.$scene.$name.exr"
       render_s[$scene]=$(elapsed "$t")
       err[$scene]=$(rmse "$work/$map.$scene.$name.exr" "$work/$map.$scene.ref.exr")
     done
-    far_field "$work/$map.plane.$name.exr" "$work/$map.plane.$name.far.exr"
-    far=$(rmse "$work/$map.plane.$name.far.exr" "$work/$map.plane.ref.far.exr")
-    rows+="| $map | $name | $bake_s | $bytes | ${render_s[plane]} | ${err[plane]} | $far | ${render_s[spheres]} | ${err[spheres]} |"$'\n'
+    far=$(crop_rmse "$work/$map.plane.$name.exr" "$work/$map.plane.ref.exr" far)
+    near=$(crop_rmse "$work/$map.spheres.$name.exr" "$work/$map.spheres.ref.exr" near)
+    mid=$(crop_rmse "$work/$map.spheres.$name.exr" "$work/$map.spheres.ref.exr" mid)
+    distant=$(crop_rmse "$work/$map.spheres.$name.exr" "$work/$map.spheres.ref.exr" distant)
+    rows+="| $map | $name | $bake_s | $bytes | ${render_s[plane]} | ${err[plane]} | $far | ${render_s[spheres]} | ${err[spheres]} | $near | $mid | $distant | ${err[env]} |"$'\n'
     echo "$name $bake_s $bytes ${err[plane]} $far ${err[spheres]}" >>"$data"
-    echo "report-filtering: $map $name bake ${bake_s} s, $bytes bytes, rmse plane ${err[plane]} (far $far), spheres ${err[spheres]}" >&2
+    echo "report-filtering: $map $name bake ${bake_s} s, $bytes bytes, rmse plane ${err[plane]} (far $far), spheres ${err[spheres]} ($near, $mid, $distant), env ${err[env]}" >&2
   done
   printf '\n\n' >>"$data"
   # Pictures: reference | mip | toksvig | sh8 | vmf4 (sRGB-encoded PNGs, clamped like `render -o .png`).
-  for scene in plane spheres; do
+  for scene in plane spheres env; do
     oiiotool "$work/$map.$scene.ref.exr" "$work/$map.$scene.mip.exr" "$work/$map.$scene.toksvig.exr" \
       "$work/$map.$scene.sh8.exr" "$work/$map.$scene.vmf4.exr" --mosaic 5x1 --clamp:min=0:max=1 \
       --colorconvert linear sRGB -d uint8 -o "$results/${map}_$scene.png"
@@ -133,14 +164,22 @@ block=$(cat <<EOB
 ## Accuracy against \`render --reference\`
 
 Machine: $(nproc) cores, $cpu (load average $(cut -d' ' -f1 /proc/loadavg) at the end of the run; shared).
-Reference: ${ref_n} x ${ref_n} rays per pixel with the raw normal map. Renders: 1 sample per pixel, 240 x 144.
+Reference: ${ref_n} x ${ref_n} rays per pixel with the raw normal map. Renders: ${spp} samples per pixel, 240 x 144.
 Bake and render times are wall clock of the whole command (process start and map loading included), in seconds;
-bytes are the baked asset's file size. RMSE of linear radiance (\`microbake compare --format json\`) over the whole
-image; "far" is the plane's 24 rows below the horizon (footprints of tens to thousands of texels). vMF assets are
-baked with \`tolerance\` 1e-4 (see "Bake cost": the same log-likelihood within 0.01 nats per normal as 1e-6).
+bytes are the baked asset's file size. RMSE of linear radiance (\`microbake compare --format json\`): "plane" and
+"spheres" over the whole image; "far" the plane's 24 rows below the horizon (footprints of ~7 texels at the
+crop's bottom row to thousands at the horizon); "near", "mid", "distant" an interior crop of each sphere (no
+silhouette pixels; ~1.5, ~5 and ~60 texels per pixel on the 256^2 map, twice that on the 512^2 maps); "env" the
+spheres lit by an environment map alone (bands 0-2, [Han07] Eq. 7.23), whole image. vMF assets are baked with
+\`tolerance\` 1e-4 (see "Bake cost": the same log-likelihood within 0.01 nats per normal as 1e-6).
 
-| map | method | bake (s) | bytes | plane render (s) | plane RMSE | plane far RMSE | spheres render (s) | spheres RMSE |
-|---|---|---|---|---|---|---|---|---|
+Reference render times (s), ${ref_n} x ${ref_n} rays per pixel:
+
+| map | plane | spheres | env spheres |
+|---|---|---|---|
+$reference_times
+| map | method | bake (s) | bytes | plane render (s) | plane RMSE | plane far RMSE | spheres render (s) | spheres RMSE | near sphere | mid sphere | distant sphere | env spheres RMSE |
+|---|---|---|---|---|---|---|---|---|---|---|---|---|
 $rows
 ![RMSE against bake time and file size](accuracy.png)
 

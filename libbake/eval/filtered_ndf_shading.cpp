@@ -81,21 +81,39 @@ double sh_filtered_brdf(const ShBasisEvaluator& basis, std::span<const double> g
 
 void delta_ndf_coefficients(const ShBasisEvaluator& basis, const Vec3& n, std::span<double> g) { basis.evaluate(n, g); }
 
-double vmf_filtered_brdf(std::span<const VmfLobeShape> lobes, std::span<const double> rhat, const Vec3& w) {
-  const int order = int(rhat.size()) - 1;
-  std::vector<double> lambda(rhat.size()), zonal(rhat.size());
+std::vector<double> vmf_filtered_rhat(std::span<const double> rhat, double kappa) {
+  std::vector<double> out(rhat.size());
+  vmf_band_factors(kappa, out);
+  for (size_t l = 0; l < out.size(); ++l) out[l] *= rhat[l];
+  return out;
+}
+
+double vmf_filtered_brdf(std::span<const VmfLobeShape> lobes, std::span<const std::vector<double>> filtered,
+                         const Vec3& w) {
+  if (filtered.size() != lobes.size())
+    throw Error(ExitCode::runtime_failure, "internal: one filtered rhat per vMF lobe is needed");
   double sum = 0.0;
-  for (const VmfLobeShape& lobe : lobes) {
-    if (lobe.alpha <= 0.0) continue;
-    vmf_band_factors(lobe.kappa, lambda);
+  std::vector<double> zonal;
+  for (size_t j = 0; j < lobes.size(); ++j) {
+    const VmfLobeShape& lobe = lobes[j];
+    if (lobe.alpha <= 0.0 || filtered[j].empty()) continue;
+    const int order = int(filtered[j].size()) - 1;
+    zonal.resize(filtered[j].size());
     zonal_harmonics(order, w.dot(lobe.mu), zonal);
     double r = 0.0;
     // rhat_l g_l Y_l0 with g_l = Lambda_l sqrt((2l+1)/(4 pi)) the lobe's zonal coefficient ([Han07] Eq. 7.14).
     for (int l = 0; l <= order; ++l)
-      r += rhat[size_t(l)] * lambda[size_t(l)] * std::sqrt((2 * l + 1) / (4 * kPi)) * zonal[size_t(l)];
+      r += filtered[j][size_t(l)] * std::sqrt((2 * l + 1) / (4 * kPi)) * zonal[size_t(l)];
     sum += lobe.alpha * r;
   }
   return sum;
+}
+
+double vmf_filtered_brdf(std::span<const VmfLobeShape> lobes, std::span<const double> rhat, const Vec3& w) {
+  std::vector<std::vector<double>> filtered;
+  for (const VmfLobeShape& lobe : lobes)
+    filtered.push_back(lobe.alpha > 0.0 ? vmf_filtered_rhat(rhat, lobe.kappa) : std::vector<double>());
+  return vmf_filtered_brdf(lobes, filtered, w);
 }
 
 double vmf_filtered_blinn_phong_exponent(double s, double kappa) {
@@ -122,21 +140,26 @@ double toksvig_beckmann_alpha(double alpha, double mean_length) {
   return std::sqrt(alpha * alpha + 2.0 * toksvig_variance(mean_length));
 }
 
+double vmf_sh_lighting(std::span<const double> light, std::span<const double> filtered, std::span<const double> y_mu) {
+  const int order = order_of_count(light.size());
+  if (filtered.size() < size_t(order) + 1 || y_mu.size() < light.size())
+    throw Error(ExitCode::runtime_failure, "internal: rhat or Y(mu) shorter than the lighting order");
+  double sum = 0.0;
+  for (int l = 0; l <= order; ++l) {
+    double band = 0.0;
+    for (int m = -l; m <= l; ++m) band += light[size_t(sh_index(l, m))] * y_mu[size_t(sh_index(l, m))];
+    sum += filtered[size_t(l)] * band;  // [Han07] Eq. (7.23)
+  }
+  return sum;
+}
+
 double vmf_sh_lighting(std::span<const double> light, std::span<const double> rhat, double kappa, const Vec3& mu) {
   const int order = order_of_count(light.size());
   if (rhat.size() < size_t(order) + 1)
     throw Error(ExitCode::runtime_failure, "internal: rhat shorter than the lighting order");
-  const ShBasisEvaluator basis(order);
-  std::vector<double> y(light.size()), lambda(size_t(order) + 1);
-  basis.evaluate(mu, y);
-  vmf_band_factors(kappa, lambda);
-  double sum = 0.0;
-  for (int l = 0; l <= order; ++l) {
-    double band = 0.0;
-    for (int m = -l; m <= l; ++m) band += light[size_t(sh_index(l, m))] * y[size_t(sh_index(l, m))];
-    sum += rhat[size_t(l)] * lambda[size_t(l)] * band;  // [Han07] Eqs. (7.23), (7.24)
-  }
-  return sum;
+  std::vector<double> y(light.size());
+  ShBasisEvaluator(order).evaluate(mu, y);
+  return vmf_sh_lighting(light, vmf_filtered_rhat(rhat.first(size_t(order) + 1), kappa), y);
 }
 
 }  // namespace mbk

@@ -15,6 +15,7 @@
 // sigma^2 = alpha^2 / 4) and Blinn-Phong s to s' = kappa s / (kappa + s) (Eq. 7.20).
 #pragma once
 
+#include <algorithm>
 #include <functional>
 #include <span>
 #include <vector>
@@ -48,6 +49,12 @@ void delta_ndf_coefficients(const ShBasisEvaluator& basis, const Vec3& n, std::s
 // [Han07] Eq. (7.14) with exact band factors: sum_j alpha_j sum_l rhat_l Lambda_l(kappa_j) (2l + 1) / (4 pi)
 // P_l(w . mu_j), Lambda_l the Bessel ratios of libbake/core/vmf_lobe.h (not Eq. 7.19's exp(-l^2 / 2 kappa)).
 double vmf_filtered_brdf(std::span<const VmfLobeShape> lobes, std::span<const double> rhat, const Vec3& w);
+// The per-lobe factor of Eqs. (7.14) and (7.23): rhat_l Lambda_l(kappa) for l = 0..rhat.size() - 1. Shaders compute
+// it once per lobe per pixel and reuse it for every light and colour channel (the band factors are the costly part).
+std::vector<double> vmf_filtered_rhat(std::span<const double> rhat, double kappa);
+// Eq. (7.14) with filtered[j] = vmf_filtered_rhat(rhat, lobes[j].kappa) precomputed (same result as above).
+double vmf_filtered_brdf(std::span<const VmfLobeShape> lobes, std::span<const std::vector<double>> filtered,
+                         const Vec3& w);
 
 // [Han07] Eq. (7.20): the exponent of a normalised Blinn-Phong lobe of exponent s convolved with a vMF lobe.
 double vmf_filtered_blinn_phong_exponent(double s, double kappa);
@@ -68,12 +75,20 @@ double toksvig_beckmann_alpha(double alpha, double mean_length);
 // alpha = inf (inf / inf) while Beckmann's vanishes; alpha = 1 (a slope deviation of 0.7 per axis) is already a
 // near-flat lobe and the roughest a scene may ask for (test: FilteredNdfEffects.CancellingNormalsStayFinite).
 inline constexpr double kMaxFilteredAlpha = 1.0;
+// The roughness a filtered shader hands to the BRDF: the widened alpha capped at kMaxFilteredAlpha, never below
+// the material's own alpha (a material rougher than the cap keeps its roughness). NaN widened gives the cap.
+inline double clamp_filtered_alpha(double alpha, double widened) {
+  return std::max(alpha, std::min(kMaxFilteredAlpha, widened));
+}
 
-// [Han07] Eqs. (7.23), (7.24): the shading of one vMF lobe (kappa, mu) under distant light given as SH
-// coefficients light_lm (one channel; order from light.size() = (L + 1)^2):
+// [Han07] Eq. (7.23): the shading of one vMF lobe (kappa, mu) under distant light given as SH coefficients light_lm
+// (one channel; order from light.size() = (L + 1)^2):
 //     B = sum_l rhat_l Lambda_l(kappa) sum_m light_lm Y_lm(mu).
-// With Lambertian rhat this is the filtered irradiance; for specular light pass the half-vector
-// reparameterised lighting L'(w_h) = L(w_i) 4 (w_i . w_h) of Eq. (7.24).
+// With Lambertian rhat this is the filtered irradiance (the vmf shader's distant diffuse). Eq. (7.24), the same
+// sum for specular light reparameterised about the half vector, is not implemented: the shaders use the
+// renderer's distant-specular lobe instead (deviation [Han07], stated in sh_effect.h and vmf_effect.h).
 double vmf_sh_lighting(std::span<const double> light, std::span<const double> rhat, double kappa, const Vec3& mu);
+// The same with filtered = vmf_filtered_rhat(rhat, kappa) and y_mu = Y_lm(mu) (size >= light.size()) precomputed.
+double vmf_sh_lighting(std::span<const double> light, std::span<const double> filtered, std::span<const double> y_mu);
 
 }  // namespace mbk

@@ -44,12 +44,17 @@ ShNdfTexture ShNdfTexture::from_asset(const Asset& asset) {
 void ShNdfTexture::add_level(size_t level, const Vec2& uv, double weight, std::span<double> g) const {
   const size_t count = size_t(basis_.count());
   if (level == 0) {
-    std::vector<double> y(count);
+    // One delta at the renormalised bilinear normal, as plain normal mapping and the reference shade (see the
+    // header; test: FilteredNdfEffects.MagnifiedBumpyMapMatchesPlainNormalMapping).
+    Vec3 n = Vec3::Zero();
     for (const TextureTap& tap : bilinear_taps(width_, height_, uv)) {
-      const float* n = &normals_[(size_t(tap.row) * width_ + tap.x) * 3];
-      basis_.evaluate(Vec3(n[0], n[1], n[2]), y);
-      for (size_t k = 0; k < count; ++k) g[k] += weight * tap.weight * y[k];
+      const float* t = &normals_[(size_t(tap.row) * width_ + tap.x) * 3];
+      n += tap.weight * Vec3(t[0], t[1], t[2]);
     }
+    const double len = n.norm();
+    std::vector<double> y(count);
+    basis_.evaluate(len > 1e-6 ? Vec3(n / len) : Vec3::UnitZ(), y);  // opposite taps: the mean lost its direction
+    for (size_t k = 0; k < count; ++k) g[k] += weight * y[k];
     return;
   }
   const uint32_t w = widths_[level - 1], h = heights_[level - 1];
@@ -92,23 +97,42 @@ VmfTexture VmfTexture::from_asset(const Asset& asset) {
 
 std::vector<VmfLobeShape> VmfTexture::lookup(const Vec2& uv, double lod, std::vector<double>* features) const {
   const size_t J = size_t(lobes_), F = size_t(features_);
-  std::vector<VmfLobeShape> lobes(J);
-  if (features) features->assign(J * F, 0.0);
+  const bool finest = finite(uv, lod) && level_blend(levels(), lod).fine == 0;
+  const size_t slots = J + (finest ? 1 : 0);
+  std::vector<VmfLobeShape> lobes(slots);
+  if (features) features->assign(slots * F, 0.0);
   if (!finite(uv, lod)) return lobes;
-  // T(alpha), T(alpha r), T(alpha y) per slot ([Han07] Sec. 7.6.4.2).
-  std::vector<double> premultiplied(J * 4, 0.0), weighted_features(J * F, 0.0);
+  // T(alpha), T(alpha r), T(alpha y) per slot ([Han07] Sec. 7.6.4.2); below LOD 1, slot J gathers level 0.
+  std::vector<double> premultiplied(slots * 4, 0.0), weighted_features(slots * F, 0.0);
   const LevelBlend b = level_blend(levels(), lod);
   for (const auto& [level, weight] : {std::pair{b.fine, 1.0 - b.t}, std::pair{b.coarse, b.t}}) {
     if (weight == 0.0) continue;
     const uint32_t w = widths_[level];
     for (const TextureTap& tap : bilinear_taps(w, heights_[level], uv)) {
       const size_t texel = size_t(tap.row) * w + tap.x;
-      for (size_t q = 0; q < J * 4; ++q) premultiplied[q] += weight * tap.weight * levels_[level][texel * J * 4 + q];
-      for (size_t q = 0; q < J * F; ++q)
-        weighted_features[q] += weight * tap.weight * feature_levels_[level][texel * J * F + q];
+      for (size_t q = 0; q < J * 4; ++q) {
+        const size_t to = level == 0 ? J * 4 + q % 4 : q;  // level 0: every slot into slot J
+        premultiplied[to] += weight * tap.weight * levels_[level][texel * J * 4 + q];
+      }
+      for (size_t q = 0; q < J * F; ++q) {
+        const size_t to = level == 0 ? J * F + q % F : q;
+        weighted_features[to] += weight * tap.weight * feature_levels_[level][texel * J * F + q];
+      }
     }
   }
-  for (size_t j = 0; j < J; ++j) {
+  if (finest) {
+    // Level 0 holds one lobe (1, n) per texel, in whichever slot the coherence pass chose. Blending the taps
+    // per slot (Alg. 7.2) would shade two or more lobes between unequal neighbours, or one whose |r| < 1 reads
+    // as a spread; plain normal mapping and the reference shade the renormalised interpolated normal. So the
+    // level-0 part is one lobe: alpha = the level's weight, r = the interpolated normal rescaled to length 1
+    // (kappa_max). Deviation [Han07]: Alg. 7.2 blends level 0 like any other level (test:
+    // FilteredNdfEffects.MagnifiedBumpyMapMatchesPlainNormalMapping).
+    double* q = &premultiplied[4 * J];
+    const double len = std::sqrt(q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    if (len > 1e-6 * q[0])
+      for (int a = 1; a <= 3; ++a) q[a] *= q[0] / len;
+  }
+  for (size_t j = 0; j < slots; ++j) {
     const double* q = &premultiplied[4 * j];
     lobes[j] = vmf_lobe_from_premultiplied(q[0], Vec3(q[1], q[2], q[3]), kappa_max_);  // Alg. 7.2 lines 7-10
     if (features && lobes[j].alpha > 0.0)

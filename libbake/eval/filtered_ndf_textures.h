@@ -2,11 +2,15 @@
 // formats/ (never a baker), looked up trilinearly with the texel-centre and wrapping rules of
 // libbake/image/texture_taps.h, at a level of detail `lod` (0 = finest).
 //
-// SH: coefficients are linear in the NDF, so a lookup is the trilinear blend of stored coefficients; at level 0
-// (stored as normals) a tap contributes Y_lm of its normal, so the bilinear blend of four finest texels is the
-// exact NDF of those four weighted deltas.
+// SH: coefficients are linear in the NDF, so a lookup is the trilinear blend of stored coefficients; level 0
+// (stored as normals) contributes Y_lm of the renormalised bilinear normal of its four taps, one delta, as plain
+// normal mapping and `render --reference` shade it (the four taps as separate deltas would add a spread that
+// interpolation does not have: on a magnified bumpy map that tripled the error against the reference).
 // vMF ([Han07] Sec. 7.6.4.2, Alg. 7.2): per lobe slot, the trilinear blend of (alpha, alpha r) (and alpha y),
-// then r = T(alpha r) / T(alpha), kappa = A^-1(|r|) (capped at the asset's kappa_max) and mu = r / |r|.
+// then r = T(alpha r) / T(alpha), kappa = A^-1(|r|) (capped at the asset's kappa_max) and mu = r / |r|; for the
+// same reason level 0 (one lobe per texel, in varying slots) is gathered into one extra lobe below LOD 1: weight
+// 1 - t, kappa_max, at the renormalised interpolated normal. Deviation [Han07]: Alg. 7.2 blends level 0 per slot
+// like any other level.
 #pragma once
 
 #include <span>
@@ -50,8 +54,10 @@ class VmfTexture {
   uint32_t width() const { return widths_.empty() ? 0 : widths_[0]; }  // of the finest level (the map's size)
   uint32_t height() const { return heights_.empty() ? 0 : heights_[0]; }
   size_t levels() const { return levels_.size(); }
-  // Alg. 7.2 lines 5-10: the J lobes at (uv, lod); features (when non-null) receives J * F values y_j (already
-  // divided by the interpolated alpha; 0 for an empty slot). NaN uv or lod give empty lobes.
+  // Alg. 7.2 lines 5-10: the J lobes at (uv, lod), plus below LOD 1 a last lobe J holding level 0 (see above;
+  // slots 0..J-1 then carry level 1 with weight t, empty at LOD 0); features (when non-null) receives one F-vector
+  // y_j per returned lobe (already divided by the interpolated alpha; 0 for an empty slot). NaN uv or lod give J
+  // empty lobes.
   std::vector<VmfLobeShape> lookup(const Vec2& uv, double lod, std::vector<double>* features = nullptr) const;
 
  private:

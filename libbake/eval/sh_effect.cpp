@@ -70,8 +70,8 @@ class ShNdfShader : public MaterialShader {
     // The spread of the NDF as one lobe (Toksvig's variance of |mean|): the masking-shadowing of the filtered
     // lobe and the distant specular use it (D itself comes from the full SH expansion).
     Brdf spread = brdf;
-    spread.lobe.alpha = std::max(
-        brdf.lobe.alpha, std::min(kMaxFilteredAlpha, toksvig_beckmann_alpha(brdf.lobe.alpha, std::min(1.0, len))));
+    spread.lobe.alpha =
+        clamp_filtered_alpha(brdf.lobe.alpha, toksvig_beckmann_alpha(brdf.lobe.alpha, std::min(1.0, len)));
 
     Vec3 out = Vec3::Zero();
     for_each_direct_light(*c.lighting, c.position, f.N, [&](const Vec3& l, const Vec3& e) {

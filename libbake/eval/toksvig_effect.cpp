@@ -2,6 +2,7 @@
 #include "libbake/eval/toksvig_effect.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "libbake/eval/filtered_ndf_shading.h"
 #include "libbake/eval/mip_effect.h"
@@ -15,13 +16,21 @@ class ToksvigShader : public MaterialShader {
 
   Vec3 radiance(const ShadingContext& c, const Brdf& brdf) const override {
     const NormalMap& finest = pyramid_->levels[0];
-    const Vec3 m = sample_pyramid(*pyramid_, c.uv, mip_lod(c.footprint, finest.width, finest.height));
+    const double lod = mip_lod(c.footprint, finest.width, finest.height);
+    Vec3 m = sample_pyramid(*pyramid_, c.uv, lod);
+    if (lod < 1.0) {
+      // The level-0 part (weight 1 - lod) is the bilinear blend of four unit normals, shorter than 1 between
+      // unequal taps; plain normal mapping and the reference shade it renormalised, so do we (no widening from
+      // interpolation alone; test: FilteredNdfEffects.MagnifiedBumpyMapMatchesPlainNormalMapping).
+      const Vec3 m0 = sample_bilinear(finest, c.uv);
+      const double len0 = m0.norm();
+      if (len0 > 1e-6) m += (1.0 - std::max(0.0, lod)) * (m0 / len0 - m0);
+    }
     const double len = m.norm();
     // As material_normals.cpp: a mean shorter than 1e-6 has lost its direction (and its lobe is flat).
     const Vec3 n = len > 1e-6 ? Vec3(m / len) : Vec3::UnitZ();
     Brdf widened = brdf;
-    widened.lobe.alpha =
-        std::max(brdf.lobe.alpha, std::min(kMaxFilteredAlpha, toksvig_beckmann_alpha(brdf.lobe.alpha, len)));
+    widened.lobe.alpha = clamp_filtered_alpha(brdf.lobe.alpha, toksvig_beckmann_alpha(brdf.lobe.alpha, len));
     return shade(*c.lighting, widened, {c.position, c.frame.N, c.frame.to_world(n).normalized(), c.to_viewer});
   }
 

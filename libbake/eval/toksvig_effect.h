@@ -2,7 +2,9 @@
 // from the baked `mip` asset, with the specular lobe widened by the spread the mean normal's length reveals
 // ([Toksvig05]; filtered_ndf_shading.h toksvig_beckmann_alpha):
 //
-//   m = trilinear mean normal at the footprint's LOD (unnormalised, as material_normals.h samples it),
+//   m = trilinear mean normal at the footprint's LOD (unnormalised, as material_normals.h samples it), except
+//       that below LOD 1 the level-0 part is the renormalised bilinear normal (interpolating between unequal
+//       normals is no spread: the reference shades the interpolated normal), so LOD 0 is plain normal mapping,
 //   sigma^2 = (1 - |m|) / |m|,   alpha' = min(sqrt(alpha^2 + 2 sigma^2), kMaxFilteredAlpha),
 //
 // then the renderer's BRDF at n = m / |m| with roughness alpha' for every light (point, directional, and the
@@ -10,7 +12,8 @@
 // widened in Beckmann's slope variance (alpha^2 / 2 per axis) and applied as is to GGX's alpha (same half-width
 // at small alpha). The diffuse term is plain Lambert at n, as in Toksvig's paper. Reference mode: `base`.
 //
-// Shader port: sample the mip texture without normalising, len = length(m), widen alpha, normalise.
+// Shader port: sample the mip texture without normalising (renormalise the level-0 tap below LOD 1), len = length(m),
+// widen alpha, normalise.
 #pragma once
 
 #include "libbake/eval/effect_shaders.h"

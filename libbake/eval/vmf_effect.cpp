@@ -17,7 +17,7 @@ constexpr double kPi = std::numbers::pi;
 class VmfShader : public MaterialShader {
  public:
   explicit VmfShader(std::shared_ptr<const VmfTexture> texture)
-      : texture_(std::move(texture)), rhat_diffuse_(lambertian_rhat(kVmfDiffuseOrder)) {}
+      : texture_(std::move(texture)), rhat_diffuse_(lambertian_rhat(kVmfDiffuseOrder)), basis_(2) {}
 
   Vec3 radiance(const ShadingContext& c, const Brdf& brdf) const override {
     const SurfaceFrame& f = c.frame;
@@ -25,19 +25,20 @@ class VmfShader : public MaterialShader {
     // The lobes in world space, each with its widened roughness (Eq. 7.21).
     std::vector<VmfLobeShape> lobes;
     std::vector<Brdf> widened;
+    std::vector<std::vector<double>> filtered;  // rhat_l Lambda_l(kappa_j), once per lobe (Eqs. 7.14, 7.23)
     for (VmfLobeShape lobe : texture_->lookup(c.uv, mip_lod(c.footprint, texture_->width(), texture_->height()))) {
       if (!(lobe.alpha > 0.0)) continue;
       lobe.mu = facing_viewer(f.to_world(lobe.mu).normalized(), v);
       Brdf b = brdf;
-      b.lobe.alpha = std::max(brdf.lobe.alpha,
-                              std::min(kMaxFilteredAlpha, vmf_filtered_beckmann_alpha(brdf.lobe.alpha, lobe.kappa)));
+      b.lobe.alpha = clamp_filtered_alpha(brdf.lobe.alpha, vmf_filtered_beckmann_alpha(brdf.lobe.alpha, lobe.kappa));
       lobes.push_back(lobe);
       widened.push_back(b);
+      filtered.push_back(vmf_filtered_rhat(rhat_diffuse_, lobe.kappa));
     }
 
     Vec3 out = Vec3::Zero();
     for_each_direct_light(*c.lighting, c.position, f.N, [&](const Vec3& l, const Vec3& e) {
-      const double diffuse = std::max(0.0, vmf_filtered_brdf(lobes, rhat_diffuse_, l));  // Eq. (7.14)
+      const double diffuse = std::max(0.0, vmf_filtered_brdf(lobes, filtered, l));  // Eq. (7.14)
       Vec3 specular = Vec3::Zero();
       for (size_t j = 0; j < lobes.size(); ++j)
         specular += lobes[j].alpha * evaluate_specular(widened[j], lobes[j].mu, l, v) * lobes[j].mu.dot(l);
@@ -47,11 +48,12 @@ class VmfShader : public MaterialShader {
       std::array<std::array<double, kShCount>, 3> light{};  // per channel
       for (int k = 0; k < kShCount; ++k)
         for (int ch = 0; ch < 3; ++ch) light[size_t(ch)][size_t(k)] = c.lighting->distant[size_t(k)][ch];
+      std::array<double, kShCount> y_mu{};
       for (size_t j = 0; j < lobes.size(); ++j) {
+        basis_.evaluate(lobes[j].mu, y_mu);
         Vec3 irradiance;
         for (int ch = 0; ch < 3; ++ch)  // Eq. (7.23)
-          irradiance[ch] =
-              std::max(0.0, vmf_sh_lighting(light[size_t(ch)], rhat_diffuse_, lobes[j].kappa, lobes[j].mu));
+          irradiance[ch] = std::max(0.0, vmf_sh_lighting(light[size_t(ch)], filtered[j], y_mu));
         out += lobes[j].alpha * (brdf.albedo.cwiseProduct(irradiance) / kPi +
                                  distant_specular(*c.lighting, brdf.f0, lobes[j].mu, v, widened[j].lobe.alpha));
       }
@@ -62,6 +64,7 @@ class VmfShader : public MaterialShader {
  private:
   std::shared_ptr<const VmfTexture> texture_;
   std::vector<double> rhat_diffuse_;
+  ShBasisEvaluator basis_;  // order 2, that of the renderer's distant lighting (kShCount = 9 coefficients)
 };
 
 }  // namespace

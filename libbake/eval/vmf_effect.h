@@ -19,8 +19,12 @@
 // Roughness convention: the renderer's microfacet alpha (microfacet_brdf.h); a lobe of concentration kappa
 // spreads each angular component by variance 1 / kappa, which adds 2 / kappa to Beckmann's alpha^2 (slope
 // variance alpha^2 / 2 per axis); the same alpha' is used for GGX (same half-width at small alpha). At level 0
-// every texel holds one lobe at its normal with kappa = kappa_max, so the image equals plain normal mapping (test:
-// FilteredNdfEffects.FinestLevelEqualsPlainNormalMapping). Reference mode: `base`.
+// every texel holds one lobe at its normal with kappa = kappa_max and the lookup gathers them into one kappa_max
+// lobe at the renormalised interpolated normal (filtered_ndf_textures.h), so the image equals plain normal mapping
+// up to that lobe's 2 / kappa_max widening and the diffuse series' truncation: within 1% on gentle bumps (test:
+// FilteredNdfEffects.FinestLevelEqualsPlainNormalMapping), 0.1% of the mean radiance on a bumpy map
+// (FilteredNdfEffects.MagnifiedBumpyMapMatchesPlainNormalMapping).
+// Reference mode: `base`.
 //
 // Shader port: 4 J floats from the trilinear fetch, decode (kappa by a short Newton solve or a table of A^-1),
 // one microfacet evaluation per lobe and light, a few bands of Bessel ratios for the diffuse term.

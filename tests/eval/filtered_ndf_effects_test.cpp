@@ -1,5 +1,6 @@
 // The filtered-NDF effects at render time (libbake/eval/sh_effect.h, vmf_effect.h, toksvig_effect.h; [Han07]):
-// - at the finest level (a magnified plane) sh and vmf shade like plain normal mapping (the `mip` effect);
+// - at the finest level (a magnified plane) sh, vmf and toksvig shade like plain normal mapping (the `mip`
+//   effect), on a smooth map and on a bumpy one;
 // - on a plane receding to the horizon they are closer to the brute-force reference than plain mip, because
 //   the NDF under a large footprint is wide and mip's renormalised mean normal forgets it;
 // - where normals cancel (a V-groove seen from afar) every effect stays finite (the kMaxFilteredAlpha cap);
@@ -90,9 +91,32 @@ TEST(FilteredNdfEffects, FinestLevelEqualsPlainNormalMapping) {
     const ImageDifference d = compare_images(filtered, plain);
     EXPECT_LT(d.rmse, 0.01 * mean(plain)) << effect.dump() << ": rmse " << d.rmse << ", mean " << mean(plain);
   }
-  // Not a tautology: Toksvig (which widens by the bilinear mean's length) and a truncated low order both differ.
+  // Not a tautology: a truncated low order differs.
   const double low = compare_images(render_with(dir, magnified({{"name", "sh"}, {"order", 2}}, specular)), plain).rmse;
   EXPECT_GT(low, 0.03 * mean(plain));
+}
+
+TEST(FilteredNdfEffects, MagnifiedBumpyMapMatchesPlainNormalMapping) {
+  // LOD 0 on a map whose neighbouring normals differ by tens of degrees: the lookups take the renormalised
+  // bilinear normal (filtered_ndf_textures.h, toksvig_effect.h), as plain normal mapping does. Before that, the
+  // four taps as separate deltas (sh), a kappa lowered by the taps' spread (vmf) or Toksvig's widening from
+  // the bilinear mean's length gave 3 times mip's error against the reference.
+  ScratchDir dir("filtered_finest_bumpy");
+  testing::write_bumpy_map(dir / "map.exr", 32, 32);
+  const json specular = {{"distribution", "beckmann"}, {"roughness", 0.3}, {"f0", 0.3}};
+  const Image plain = render_with(dir, magnified("mip", specular));
+  const auto rmse = [&](const json& effect) {
+    return compare_images(render_with(dir, magnified(effect, specular)), plain).rmse;
+  };
+  // Toksvig: the same normal and, with |n| = 1, no widening: the same image up to float rounding.
+  EXPECT_LT(rmse("toksvig"), 1e-4 * mean(plain));
+  // sh: what is left is the truncation of D at order 24; vmf: kappa_max's widening and the diffuse series.
+  // Measured: sh24 0.31%, vmf2 0.016% of the mean.
+  const double sh = rmse({{"name", "sh"}, {"order", 24}, {"precision", "f32"}}),
+               vmf = rmse({{"name", "vmf"}, {"lobes", 2}});
+  std::cout << "magnified bumpy map, rmse vs mip: sh24 " << sh << ", vmf2 " << vmf << " (mean " << mean(plain) << ")\n";
+  EXPECT_LT(sh, 0.005 * mean(plain));
+  EXPECT_LT(vmf, 0.001 * mean(plain));
 }
 
 TEST(FilteredNdfEffects, FinestLevelEqualsPlainNormalMapping_EnvironmentLight) {
@@ -146,9 +170,10 @@ TEST(FilteredNdfEffects, RecedingPlaneIsCloserToTheReferenceThanPlainMip) {
   const double sh = error({{"name", "sh"}, {"order", 16}}), vmf = error({{"name", "vmf"}, {"lobes", 4}});
   std::cout << "rmse vs reference: mip " << mip << ", toksvig " << toksvig << ", sh16 " << sh << ", vmf4 " << vmf
             << " (mean " << mean(reference) << ")\n";
-  EXPECT_LT(sh, 0.8 * mip);
-  EXPECT_LT(vmf, 0.8 * mip);
-  EXPECT_LT(toksvig, mip);
+  // Measured: mip 0.93, toksvig 0.50, sh16 0.54, vmf4 0.47 (mean 0.38); the bounds leave ~10% of margin.
+  EXPECT_LT(sh, 0.65 * mip);
+  EXPECT_LT(vmf, 0.6 * mip);
+  EXPECT_LT(toksvig, 0.6 * mip);
 }
 
 TEST(FilteredNdfEffects, CancellingNormalsStayFinite) {

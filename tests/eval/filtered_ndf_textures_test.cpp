@@ -34,13 +34,16 @@ TEST(ShNdfTexture, TexelCentresAndLevelBlends) {
   t.lookup(centre_uv(8, 8, 3, 5), 0.0, g);
   const auto y = basis.evaluate(map.at(3, 5).cast<double>());
   for (int k = 0; k < 25; ++k) EXPECT_NEAR(g[size_t(k)], y[size_t(k)], 1e-6);
-  // Level 1 at a texel centre: the stored texel, which is also level 0 looked up at the block's shared corner.
+  // Level 1 at a texel centre: the stored texel (the mean of its four deltas). Level 0 looked up at the block's
+  // shared corner is one delta at the renormalised mean of the four normals instead (as plain normal mapping).
   const std::vector<float> level1 = a.read<float>("level_1");
   t.lookup(centre_uv(4, 4, 1, 2), 1.0, g1);
   t.lookup(centre_uv(4, 4, 1, 2), 0.0, g2);
+  const Vec3 corner = (map.at(2, 4) + map.at(3, 4) + map.at(2, 5) + map.at(3, 5)).cast<double>().normalized();
+  const auto y_corner = basis.evaluate(corner);
   for (int k = 0; k < 25; ++k) {
     EXPECT_NEAR(g1[size_t(k)], level1[(2 * 4 + 1) * 25 + size_t(k)], 1e-7);
-    EXPECT_NEAR(g2[size_t(k)], g1[size_t(k)], 1e-6);
+    EXPECT_NEAR(g2[size_t(k)], y_corner[size_t(k)], 1e-6);
   }
   // Between levels: linear.
   const Vec2 uv(0.3, 0.71);
@@ -73,18 +76,25 @@ TEST(VmfTexture, InterpolatesPremultipliedLobesPerSlot) {
       EXPECT_EQ(l.kappa, 1e6);
     }
   EXPECT_NEAR(total, 1.0, 1e-7);
-  // Halfway between the texels at lod 0: the slot holding both lobes (same slot after the coherence pass,
-  // which matches each finest lobe to its parent's) blends alpha r: r = (a + b) / 2, a broad lobe.
+  // Halfway between the texels at lod 0: one lobe (the extra slot J) at the renormalised interpolated normal
+  // with kappa at the cap, as plain normal mapping shades it, not the taps' two lobes or a broad blend.
   lobes = t.lookup(Vec2(0.5, 0.5), 0.0);
+  ASSERT_EQ(lobes.size(), 3u);
+  EXPECT_EQ(lobes[0].alpha, 0.0);
+  EXPECT_EQ(lobes[1].alpha, 0.0);
+  EXPECT_NEAR(lobes[2].alpha, 1.0, 1e-7);
+  EXPECT_LT((lobes[2].mu - Vec3::UnitZ()).norm(), 1e-6);
+  EXPECT_EQ(lobes[2].kappa, 1e6);
+  // Between levels 0 and 1 (lod 0.25): 0.75 of that lobe, 0.25 of the coarse level's slots.
   const auto top = t.lookup(Vec2(0.5, 0.5), 1.0);
-  double alpha_sum = 0;
-  Vec3 moment = Vec3::Zero();
-  for (const auto& l : lobes) {
-    alpha_sum += l.alpha;
-    if (l.alpha > 0) moment += l.alpha * vmf_mean_length(l.kappa) * l.mu;
+  ASSERT_EQ(top.size(), 2u);
+  const auto between = t.lookup(Vec2(0.5, 0.5), 0.25);
+  ASSERT_EQ(between.size(), 3u);
+  EXPECT_NEAR(between[2].alpha, 0.75, 1e-7);
+  for (size_t j = 0; j < 2; ++j) {
+    EXPECT_NEAR(between[j].alpha, 0.25 * top[j].alpha, 1e-7);
+    if (top[j].alpha > 0) EXPECT_NEAR(between[j].kappa, top[j].kappa, 1e-6 * top[j].kappa);
   }
-  EXPECT_NEAR(alpha_sum, 1.0, 1e-7);
-  EXPECT_LT((moment - 0.5 * (a + b)).norm(), 1e-5);  // first moment preserved by the linear blend
   int live = 0;
   for (const auto& l : top) live += l.alpha > 0;
   EXPECT_EQ(live, 2);  // the coarse level keeps both facets
