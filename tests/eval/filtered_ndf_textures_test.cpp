@@ -93,7 +93,9 @@ TEST(VmfTexture, InterpolatesPremultipliedLobesPerSlot) {
   EXPECT_NEAR(between[2].alpha, 0.75, 1e-7);
   for (size_t j = 0; j < 2; ++j) {
     EXPECT_NEAR(between[j].alpha, 0.25 * top[j].alpha, 1e-7);
-    if (top[j].alpha > 0) EXPECT_NEAR(between[j].kappa, top[j].kappa, 1e-6 * top[j].kappa);
+    if (top[j].alpha > 0) {
+      EXPECT_NEAR(between[j].kappa, top[j].kappa, 1e-6 * top[j].kappa);
+    }
   }
   int live = 0;
   for (const auto& l : top) live += l.alpha > 0;
