@@ -17,7 +17,8 @@ std::vector<uint64_t> GraphLayout::transfer_shape() const {
 std::string parse_graph_layout(const Asset& asset, GraphLayout& g) {
   const nlohmann::json& p = asset.metadata()["parameters"];
   if (!p.is_object()) return "parameters missing";
-  for (const char* key : {"side", "levels", "channels", "exemplars", "candidates", "pca_components"})
+  for (const char* key :
+       {"side", "levels", "channels", "exemplars", "candidates", "pca_components", "synthesis_pca_components"})
     if (!p.contains(key) || !p[key].is_number_unsigned() || p[key].get<uint64_t>() > 0xFFFFFFFFu)
       return std::string("parameters.") + key + " missing or not an unsigned 32-bit integer";
   g.side = p["side"];
@@ -26,6 +27,7 @@ std::string parse_graph_layout(const Asset& asset, GraphLayout& g) {
   g.exemplars = p["exemplars"];
   g.candidates = p["candidates"];
   g.pca_components = p["pca_components"];
+  g.synthesis_pca_components = p["synthesis_pca_components"];
   if (g.side < 4 || g.side > 4096 || (g.side & (g.side - 1)) != 0) return "side must be a power of two in [4, 4096]";
   uint32_t L = 0;
   while ((1u << L) < g.side) ++L;
@@ -33,6 +35,8 @@ std::string parse_graph_layout(const Asset& asset, GraphLayout& g) {
   if (g.channels < 1 || g.channels > 4) return "channels must be 1..4";
   if (g.exemplars < 1 || g.exemplars > 1024) return "exemplars must be 1..1024";
   if (g.candidates < 1 || g.candidates > 16) return "candidates must be 1..16";
+  if (g.synthesis_pca_components < 1 || g.synthesis_pca_components > 25 * g.channels)
+    return "synthesis_pca_components must be 1..25 x channels";
   const nlohmann::json& graph = asset.metadata()["graph"];
   if (!graph.is_object() || !graph.contains("ids") || !graph["ids"].is_array() || graph["ids"].size() != g.exemplars)
     return "graph.ids must list one id per exemplar";
@@ -44,6 +48,12 @@ std::string parse_graph_layout(const Asset& asset, GraphLayout& g) {
   if (!graph.contains("root") || !graph["root"].is_number_unsigned() || graph["root"].get<uint64_t>() >= g.exemplars)
     return "graph.root must be an exemplar index";
   g.root = graph["root"];
+  const nlohmann::json& super = asset.metadata()["superexemplar"];
+  if (!super.is_object() || !super.contains("sets") || !super["sets"].is_array() || super["sets"].empty() ||
+      super["sets"].size() > 100000 || !super.contains("repeat_from") || !super["repeat_from"].is_number_unsigned() ||
+      super["repeat_from"].get<uint64_t>() >= super["sets"].size())
+    return "superexemplar must hold a non-empty array of sets and repeat_from below their count";
+  g.depths = uint32_t(super["sets"].size());
   g.normal_map = graph.value("normal_map", nlohmann::json(false)).is_boolean() && graph.value("normal_map", false);
   if (!graph.contains("edges") || !graph["edges"].is_array()) return "graph.edges must be an array";
   g.edges.clear();
@@ -63,7 +73,9 @@ std::string check_graph_section_shapes(const Asset& asset, const GraphLayout& g)
   const std::pair<const char*, std::pair<ElementType, std::vector<uint64_t>>> expected[] = {
       {kGraphStacksSection, {ElementType::f32, g.stacks_shape()}},
       {kGraphCandidatesSection, {ElementType::u32, g.candidates_shape()}},
-      {kGraphTransferSection, {ElementType::f32, g.transfer_shape()}}};
+      {kGraphTransferSection, {ElementType::f32, g.transfer_shape()}},
+      {kGraphPcaMeanSection, {ElementType::f32, g.pca_mean_shape()}},
+      {kGraphPcaBasisSection, {ElementType::f32, g.pca_basis_shape()}}};
   for (const auto& [name, type_shape] : expected) {
     const SectionInfo& s = asset.section(name);
     if (s.type != type_shape.first || s.shape != type_shape.second)

@@ -13,6 +13,10 @@
 //                                            A(E^i_k) (admissible_levels.h)
 //   transfer    f32 [E, L + 1, m, m, K, C]  the constant offset b of each candidate (destination + b matches the
 //                                            source); 0 when j = i, and where there is no candidate
+//   synthesis_pca_mean   f32 [D, 25 C]       per synthesis level t < D (the superexemplar's stored sets, metadata
+//   synthesis_pca_basis  f32 [D, 25 C, P]    "superexemplar"), the mean and P orthonormal principal components of
+//                                            the 5 x 5 neighbourhoods (row by row, channels fastest) of every stack
+//                                            level of that red depth ([Han08] Sec. 5.4), largest variance first
 #pragma once
 
 #include <cstdint>
@@ -30,9 +34,13 @@ inline constexpr uint32_t kGraphNoCandidate = 0xFFFFFFFFu;
 inline constexpr const char* kGraphStacksSection = "stacks";
 inline constexpr const char* kGraphCandidatesSection = "candidates";
 inline constexpr const char* kGraphTransferSection = "transfer";
+inline constexpr const char* kGraphPcaMeanSection = "synthesis_pca_mean";
+inline constexpr const char* kGraphPcaBasisSection = "synthesis_pca_basis";
 
 struct GraphLayout {
   uint32_t side = 0, levels = 0, channels = 0, exemplars = 0, candidates = 0, pca_components = 0;
+  uint32_t depths = 0;                    // stored superexemplar sets (synthesis levels before the period repeats)
+  uint32_t synthesis_pca_components = 0;  // P of the per-synthesis-level PCA
   uint32_t root = 0;
   bool normal_map = false;  // graph.normal_map: stacks hold unit +Y tangent-space vectors (their blurs shorter)
   std::vector<std::string> ids;
@@ -40,6 +48,8 @@ struct GraphLayout {
   std::vector<uint64_t> stacks_shape() const;
   std::vector<uint64_t> candidates_shape() const;
   std::vector<uint64_t> transfer_shape() const;
+  std::vector<uint64_t> pca_mean_shape() const { return {depths, 25ull * channels}; }
+  std::vector<uint64_t> pca_basis_shape() const { return {depths, 25ull * channels, synthesis_pca_components}; }
 };
 
 // Reads and checks the parameters and graph metadata (side a power of two in [4, 4096], levels = log2(side) + 1,

@@ -4,7 +4,8 @@
 // Invariants `validate` checks, in this order (the first finding ends the check): parameters and graph metadata
 // (19001), section types and shapes (19002), finite stacks and transfers (19003), every candidate either none (all
 // four words 0xFFFFFFFF) or in range with its (exemplar, level) admissible for its stack level, recomputed from the
-// recorded edges (19004), transfer offsets exactly 0 within one exemplar and where there is no candidate (19005).
+// recorded edges (19004), transfer offsets exactly 0 within one exemplar and where there is no candidate (19005),
+// finite synthesis PCA means and orthonormal bases (19006: |b_p . b_q - delta_pq| <= 1e-4, float storage).
 #include <algorithm>
 #include <cmath>
 
@@ -33,6 +34,27 @@ void check_graph(const Asset& a, std::vector<Finding>& out) {
         out.push_back(make_finding(msg::graph_non_finite, "'" + std::string(name) + "' element " + std::to_string(i),
                                    {{"section", name}, {"index", i}}));
         return;
+      }
+  // The per-synthesis-level PCA: finite means, orthonormal bases (float storage: 1e-4).
+  const std::vector<float> means = a.read<float>(kGraphPcaMeanSection), bases = a.read<float>(kGraphPcaBasisSection);
+  const size_t dims = 25 * size_t(g.channels), P = g.synthesis_pca_components;
+  for (float v : means)
+    if (!std::isfinite(v)) {
+      out.push_back(make_finding(msg::graph_bad_pca, "non-finite synthesis PCA mean"));
+      return;
+    }
+  for (size_t d = 0; d < g.depths; ++d)
+    for (size_t p = 0; p < P; ++p)
+      for (size_t q = p; q < P; ++q) {
+        double dot = 0.0;
+        for (size_t i = 0; i < dims; ++i) dot += double(bases[(d * dims + i) * P + p]) * bases[(d * dims + i) * P + q];
+        if (!(std::abs(dot - (p == q ? 1.0 : 0.0)) <= 1e-4)) {
+          out.push_back(make_finding(msg::graph_bad_pca,
+                                     "synthesis level " + std::to_string(d) + ": components " + std::to_string(p) +
+                                         " and " + std::to_string(q) + " have dot product " + std::to_string(dot),
+                                     {{"depth", d}}));
+          return;
+        }
       }
   const std::vector<uint32_t> candidates = a.read<uint32_t>(kGraphCandidatesSection);
   const auto admissible = admissible_levels(g.exemplars, g.edges, g.levels);
@@ -74,9 +96,14 @@ AssetKind graph_kind() {
   k.summary = "exemplar-graph analysis: Gaussian stacks, k-coherence candidate sets and transfer functions";
   k.required_sections = {{kGraphStacksSection, {ElementType::f32}, 5},
                          {kGraphCandidatesSection, {ElementType::u32}, 6},
-                         {kGraphTransferSection, {ElementType::f32}, 6}};
+                         {kGraphTransferSection, {ElementType::f32}, 6},
+                         {kGraphPcaMeanSection, {ElementType::f32}, 2},
+                         {kGraphPcaBasisSection, {ElementType::f32}, 3}};
   k.knows_section = [](const std::string& name) {
-    return name == kGraphStacksSection || name == kGraphCandidatesSection || name == kGraphTransferSection;
+    for (const char* s : {kGraphStacksSection, kGraphCandidatesSection, kGraphTransferSection, kGraphPcaMeanSection,
+                          kGraphPcaBasisSection})
+      if (name == s) return true;
+    return false;
   };
   k.check_invariants = check_graph;
   return k;

@@ -115,6 +115,7 @@ std::span<const MessageInfo> all_messages() {
       graph_non_finite,
       graph_bad_candidate,
       graph_bad_transfer,
+      graph_bad_pca,
   };
   return kAll;
 }

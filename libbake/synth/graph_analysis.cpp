@@ -122,6 +122,16 @@ GraphAnalysis analyse_graph(const ExemplarGraph& graph, const std::vector<Image>
       });
       progress.advance();
     }
+  // Sec. 5.4: one PCA per synthesis level, over the neighbourhoods of every stack level of its red depth.
+  a.superexemplar = superexemplar_levels(E, graph.edges, a.levels, graph.root);
+  for (const std::vector<StackLevel>& set : a.superexemplar.sets) {
+    std::vector<float> all;
+    for (const StackLevel& l : set) {
+      const std::vector<float>& v = vectors[size_t(l.exemplar) * a.levels + l.level];
+      all.insert(all.end(), v.begin(), v.end());
+    }
+    a.synthesis_pca.push_back(fit_pca(all, dims, kSynthesisPcaComponents));
+  }
   progress.finish();
   return a;
 }

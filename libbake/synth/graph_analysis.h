@@ -5,11 +5,11 @@
 //   - k-coherence candidate sets (Sec. 5.2.2.3, Eq. 5.2, after Tong et al. 2002): for every texel E^i_k[u], the K
 //     texels E^j_l[v] over the admissible levels whose 5 x 5 neighbourhoods, sampled at the levels' own spacings
 //     h_k and h_l (toroidally), best match its own. Matched in PCA space (neighbourhood_pca.h) by exact FLANN
-//     search (neighbourhood_search.h). Deviation [Han08]: Sec. 5.4 fits one PCA per synthesis level, on every
-//     stack level of that red depth (formats/admissible_levels.h superexemplar_levels, stored in the asset); we
-//     fit one per source level on its admissible levels, the neighbourhoods its search actually compares: a stack
-//     level occurs at several red depths through loops and would otherwise need one candidate set per depth
-//     (test: GraphAnalysis.FirstCandidateIsTheBruteForceNearestInPcaSpace...);
+//     search (neighbourhood_search.h). Deviation [Han08]: Sec. 5.4 matches in one PCA per synthesis level (which
+//     we also compute and store, below); the candidate search fits one per source level on its admissible levels,
+//     the neighbourhoods it actually compares: a stack level occurs at several red depths through loops and
+//     would otherwise need one candidate set per depth (test:
+//     GraphAnalysis.FirstCandidateIsTheBruteForceNearestInPcaSpace...);
 //     spatially dispersed (after Zelinka & Garland 2002): among the 64 nearest, candidate c > 0 is the best one
 //     lying at least max(2, min(h_l, m / 4)) texels (toroidal, per axis max) from every earlier candidate of its
 //     level, or, when none does (a smooth coarse level, whose nearest neighbourhoods all lie around the texel), the
@@ -28,11 +28,13 @@
 #include "formats/graph_layout.h"
 #include "libbake/synth/exemplar_graph.h"
 #include "libbake/synth/gaussian_stack.h"
+#include "libbake/synth/neighbourhood_pca.h"
 
 namespace mbk {
 
 inline constexpr uint32_t kNoCandidate = kGraphNoCandidate;  // formats/graph_layout.h
 inline constexpr uint32_t kSynthNeighbourhood = 5;           // 5 x 5 (Eq. 5.1)
+inline constexpr uint32_t kSynthesisPcaComponents = 6;       // the thesis' 6-d PCA space (Sec. 5.4)
 
 struct SynthCandidate {
   uint32_t exemplar = kNoCandidate, level = 0, x = 0, y = 0;
@@ -51,6 +53,12 @@ struct GraphAnalysis {
   std::vector<SynthCandidate> candidates;
   std::vector<float> transfer;        // the same index * channels + channel
   std::vector<double> kept_variance;  // per (exemplar, level): PCA variance kept (1 for a level without candidates)
+  // Sec. 5.4: per synthesis level (each stored set of formats/admissible_levels.h superexemplar_levels), the PCA
+  // of the 5 x 5 neighbourhoods of every stack level of that red depth, kSynthesisPcaComponents components: the
+  // basis a renderer projects neighbourhoods with to match them in a few dimensions (our CPU synthesis matches
+  // in full).
+  SuperexemplarLevels superexemplar;
+  std::vector<NeighbourhoodPca> synthesis_pca;
 
   size_t candidate_index(uint32_t exemplar, uint32_t level, uint32_t x, uint32_t y) const {
     return ((size_t(exemplar * levels + level) * side + y) * side + x) * K;

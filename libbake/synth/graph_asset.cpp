@@ -74,14 +74,18 @@ AssetWriter graph_asset_writer(const ExemplarGraph& graph, const GraphAnalysis& 
   nlohmann::json metadata;
   metadata["inputs"] = nlohmann::json::array({graph_record});
   for (const auto& r : exemplar_records) metadata["inputs"].push_back(r);
-  metadata["parameters"] = {{"side", a.side},         {"levels", a.levels},
-                            {"channels", a.channels}, {"exemplars", layout.exemplars},
-                            {"candidates", a.K},      {"pca_components", options.pca_components}};
+  metadata["parameters"] = {{"synthesis_pca_components", kSynthesisPcaComponents},
+                            {"side", a.side},
+                            {"levels", a.levels},
+                            {"channels", a.channels},
+                            {"exemplars", layout.exemplars},
+                            {"candidates", a.K},
+                            {"pca_components", options.pca_components}};
   nlohmann::json ids = nlohmann::json::array(), edges = nlohmann::json::array();
   for (const auto& e : graph.exemplars) ids.push_back(e.id);
   for (const GraphEdge& e : graph.edges) edges.push_back({e.source, e.destination, e.r});
   metadata["graph"] = {{"ids", ids}, {"root", graph.root}, {"edges", edges}, {"normal_map", graph.normal_map}};
-  const SuperexemplarLevels super = superexemplar_levels(layout.exemplars, graph.edges, a.levels, graph.root);
+  const SuperexemplarLevels& super = a.superexemplar;
   nlohmann::json sets = nlohmann::json::array();
   for (const auto& set : super.sets) {
     nlohmann::json levels = nlohmann::json::array();
@@ -129,6 +133,16 @@ AssetWriter graph_asset_writer(const ExemplarGraph& graph, const GraphAnalysis& 
   writer.add(kGraphStacksSection, layout.stacks_shape(), stacks);
   writer.add(kGraphCandidatesSection, layout.candidates_shape(), candidates);
   writer.add(kGraphTransferSection, layout.transfer_shape(), a.transfer);
+  std::vector<float> means, bases;
+  for (const NeighbourhoodPca& p : a.synthesis_pca) {
+    for (Eigen::Index d = 0; d < p.mean.size(); ++d) means.push_back(float(p.mean[d]));
+    for (Eigen::Index d = 0; d < p.basis.rows(); ++d)
+      for (Eigen::Index c = 0; c < p.basis.cols(); ++c) bases.push_back(float(p.basis(d, c)));
+  }
+  layout.depths = uint32_t(a.synthesis_pca.size());
+  layout.synthesis_pca_components = kSynthesisPcaComponents;
+  writer.add(kGraphPcaMeanSection, layout.pca_mean_shape(), means);
+  writer.add(kGraphPcaBasisSection, layout.pca_basis_shape(), bases);
   return writer;
 }
 

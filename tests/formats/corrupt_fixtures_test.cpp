@@ -367,6 +367,8 @@ std::vector<CorruptCase> corrupt_cases() {
        [] { return test::graph_bytes([](test::GraphParts& p) { p.candidates[1] = 2; }); }},  // texel 0: (0, 2)
       {"GraphTransferWithinOneExemplar", 19005,
        [] { return test::graph_bytes([](test::GraphParts& p) { p.transfer[0] = 0.5f; }); }},  // (0, 0) -> E0_0
+      {"GraphPcaBasisNotOrthonormal", 19006,
+       [] { return test::graph_bytes([](test::GraphParts& p) { p.pca_basis[2 * 2 + 1] = 0.5f; }); }},
       {"CreaseZeroWidth", 16001,
        [] {
          return test::crease_bytes({}, {{"width", 0}, {"height", 2}});

@@ -16,7 +16,7 @@ namespace mbk::test {
 
 struct GraphParts {
   nlohmann::json metadata;
-  std::vector<float> stacks, transfer;
+  std::vector<float> stacks, transfer, pca_mean, pca_basis;
   std::vector<uint32_t> candidates;
 };
 
@@ -28,6 +28,7 @@ inline GraphParts valid_graph_parts() {
       {"parameters",
        {{"side", m}, {"levels", levels}, {"channels", 1}, {"exemplars", E}, {"candidates", K}, {"pca_components", 8}}},
       {"graph", {{"ids", {"a", "b"}}, {"root", 0}, {"edges", {{0, 1, 1}}}}},
+      {"superexemplar", {{"sets", {{{0, 0}}, {{0, 1}, {1, 0}}, {{0, 2}, {1, 0}, {1, 1}}}}, {"repeat_from", 2}}},
       {"conventions", nlohmann::json::object()},
       {"statistics", nlohmann::json::object()}};
   for (uint32_t i = 0; i < E * levels * m * m; ++i) p.stacks.push_back(0.25f + 0.01f * float(i % 7));
@@ -44,6 +45,14 @@ inline GraphParts valid_graph_parts() {
         p.candidates.insert(p.candidates.end(), {l.exemplar, l.level, 0u, 0u});
         p.transfer.push_back(l.exemplar == i ? 0.0f : 0.1f);
       }
+  // Three stored synthesis levels, 25 dimensions, P = 2: the first two unit axes.
+  p.metadata["parameters"]["synthesis_pca_components"] = 2;
+  p.pca_mean.assign(3 * 25, 0.5f);
+  p.pca_basis.assign(3 * 25 * 2, 0.0f);
+  for (size_t d = 0; d < 3; ++d) {
+    p.pca_basis[(d * 25 + 0) * 2 + 0] = 1.0f;
+    p.pca_basis[(d * 25 + 1) * 2 + 1] = 1.0f;
+  }
   return p;
 }
 
@@ -54,6 +63,8 @@ inline std::vector<uint8_t> graph_bytes(const std::function<void(GraphParts&)>& 
   w.add(kGraphStacksSection, {2, 3, 4, 4, 1}, p.stacks);
   w.add(kGraphCandidatesSection, {2, 3, 4, 4, 1, 4}, p.candidates);
   w.add(kGraphTransferSection, {2, 3, 4, 4, 1, 1}, p.transfer);
+  w.add(kGraphPcaMeanSection, {3, 25}, p.pca_mean);
+  w.add(kGraphPcaBasisSection, {3, 25, 2}, p.pca_basis);
   return w.serialize();
 }
 

@@ -183,6 +183,45 @@ TEST(GraphAnalysis, TransferFunctionsAreTheMeanNeighbourhoodDifference_ZeroWithi
   EXPECT_GT(across, 100u);
 }
 
+// Sec. 5.4: one PCA per synthesis level over the neighbourhoods of its red depth's stack levels: the mean is theirs,
+// the basis orthonormal, and the first component holds more variance than any of 200 random directions.
+TEST(GraphAnalysis, SynthesisLevelPcaSpansItsRedDepthsNeighbourhoods) {
+  const uint32_t m = 16;
+  TwoExemplarGraph g(m);
+  const GraphAnalysis a = analyse_graph(g.graph, g.images, {}, Progress::silent());
+  ASSERT_EQ(a.synthesis_pca.size(), a.superexemplar.sets.size());
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> gauss;
+  for (size_t d = 0; d < a.synthesis_pca.size(); ++d) {
+    std::vector<Eigen::VectorXd> v;
+    for (const StackLevel& l : a.superexemplar.sets[d])
+      for (uint32_t y = 0; y < m; ++y)
+        for (uint32_t x = 0; x < m; ++x) {
+          std::vector<float> n(75);
+          stack_neighbourhood(a.stacks[l.exemplar].images[l.level], a.stacks[l.exemplar].spacing(l.level), x, y,
+                              n.data());
+          v.push_back(Eigen::Map<Eigen::VectorXf>(n.data(), 75).cast<double>());
+        }
+    Eigen::VectorXd mean = Eigen::VectorXd::Zero(75);
+    for (const auto& x : v) mean += x / double(v.size());
+    const NeighbourhoodPca& pca = a.synthesis_pca[d];
+    EXPECT_LT((pca.mean - mean).norm(), 1e-5) << d;
+    ASSERT_EQ(pca.basis.cols(), Eigen::Index(kSynthesisPcaComponents));
+    EXPECT_LT((pca.basis.transpose() * pca.basis - Eigen::MatrixXd::Identity(6, 6)).norm(), 1e-9) << d;
+    const auto variance_along = [&](const Eigen::VectorXd& dir) {
+      double s = 0.0;
+      for (const auto& x : v) s += std::pow((x - mean).dot(dir), 2);
+      return s / double(v.size());
+    };
+    const double first = variance_along(pca.basis.col(0));
+    for (int r = 0; r < 200; ++r) {
+      Eigen::VectorXd dir(75);
+      for (int i = 0; i < 75; ++i) dir[i] = gauss(rng);
+      EXPECT_LE(variance_along(dir.normalized()), first * (1 + 1e-9)) << d;
+    }
+  }
+}
+
 TEST(GraphAnalysis, SameCandidatesWhateverTheThreadCount) {
   TwoExemplarGraph g(16);
   const GraphAnalysis a = analyse_graph(g.graph, g.images, {}, Progress::silent());
