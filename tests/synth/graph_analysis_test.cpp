@@ -93,7 +93,7 @@ TEST(GraphAnalysis, FirstCandidateIsTheBruteForceNearestInPcaSpaceAndOthersAdmis
   const GraphAnalysis a = analyse_graph(g.graph, g.images, options, Progress::silent());
   ASSERT_EQ(a.levels, 5u);
   const uint32_t ch = 3, dims = 25 * ch;
-  size_t checked = 0, same_level = 0, dispersed = 0;
+  size_t checked = 0, same_level = 0, dispersed = 0, second_checked = 0;
   for (uint32_t i = 0; i < 2; ++i)
     for (uint32_t k = 0; k < a.levels; ++k) {
       const auto& pool_levels = a.admissible[i][k];
@@ -117,9 +117,38 @@ TEST(GraphAnalysis, FirstCandidateIsTheBruteForceNearestInPcaSpaceAndOthersAdmis
       const NeighbourhoodPca pca = fit_pca(pool, dims, options.pca_components);
       const std::vector<float> p = pca.project(pool), q = pca.project(source);
       const uint32_t comps = uint32_t(pca.basis.cols());
+      const uint32_t L = a.levels - 1;
+      const bool own_level_in_pool =
+          std::find(pool_levels.begin(), pool_levels.end(), StackLevel{i, k}) != pool_levels.end();
       for (uint32_t t = 0; t < m * m; ++t) {
         double best = INFINITY;
         for (size_t j = 0; j < p.size() / comps; ++j) best = std::min(best, squared_distance(q, p, t, j, comps));
+        // Where the texel's own level is searched the nearest is the texel itself (distance 0): the second
+        // candidate is the informative one. By brute force: the 64 nearest, the first dispersed one.
+        if (own_level_in_pool || k == L) {
+          std::vector<std::pair<double, size_t>> ranked;
+          for (size_t j = 0; j < p.size() / comps; ++j) ranked.push_back({squared_distance(q, p, t, j, comps), j});
+          std::sort(ranked.begin(), ranked.end());
+          const SynthCandidate& c0 = a.candidates[a.candidate_index(i, k, t % m, t / m)];
+          const SynthCandidate& c1 = a.candidates[a.candidate_index(i, k, t % m, t / m) + 1];
+          const auto torus = [&](uint32_t u, uint32_t v) { return std::min((u + m - v) % m, (v + m - u) % m); };
+          double expected = -1.0;
+          for (size_t r = 0; r < std::min<size_t>(64, ranked.size()) && expected < 0; ++r) {
+            const size_t j = ranked[r].second;
+            const StackLevel& l = pool_levels[j / (m * m)];
+            const uint32_t x = uint32_t(j % (m * m)) % m, y = uint32_t(j % (m * m)) / m;
+            const bool same_level = l.exemplar == c0.exemplar && l.level == c0.level;
+            const uint32_t spread = std::max(2u, std::min(a.stacks[l.exemplar].spacing(l.level), m / 4));
+            if (!same_level || std::max(torus(x, c0.x), torus(y, c0.y)) >= spread) expected = ranked[r].first;
+          }
+          size_t at1 = 0;
+          while (!(pool_levels[at1].exemplar == c1.exemplar && pool_levels[at1].level == c1.level)) ++at1;
+          const double got1 = squared_distance(q, p, t, at1 * m * m + size_t(c1.y) * m + c1.x, comps);
+          if (expected >= 0) {
+            EXPECT_NEAR(got1, expected, 1e-4 * std::max(1.0, expected)) << "exemplar " << i << " level " << k;
+            ++second_checked;
+          }
+        }
         const SynthCandidate& c = a.candidates[a.candidate_index(i, k, t % m, t / m)];
         ASSERT_NE(c.exemplar, kNoCandidate);
         size_t at = 0;
@@ -147,6 +176,7 @@ TEST(GraphAnalysis, FirstCandidateIsTheBruteForceNearestInPcaSpaceAndOthersAdmis
       }
     }
   EXPECT_GT(checked, 2000u);
+  EXPECT_GT(second_checked, 1000u);
   std::cout << dispersed << " of " << same_level << " second candidates in the first's level are dispersed\n";
   EXPECT_GT(dispersed, same_level * 3 / 4);
 }
