@@ -26,15 +26,13 @@ constexpr double kAbsolute = std::numeric_limits<float>::denorm_min();
 
 void check_moments(const Asset& a, std::vector<Finding>& out) {
   const auto& p = a.metadata()["parameters"];
-  if (!p.is_object() || !p.contains("width") || !p.contains("height") || !p.contains("shift") ||
-      !p["width"].is_number_unsigned() || !p["height"].is_number_unsigned() || !p["shift"].is_number() ||
-      !std::isfinite(p["shift"].get<double>())) {
-    out.push_back(make_finding(msg::moments_bad_parameters, "parameters.width/height/shift missing or not finite"));
+  std::vector<LevelSize> sizes;  // width, height and levels read as every pyramid kind reads them
+  if (std::string problem = parse_mip_parameters(p, sizes); !problem.empty()) {
+    out.push_back(make_finding(msg::moments_bad_parameters, problem));
     return;
   }
-  const auto sizes = mip_level_sizes(p["width"].get<uint32_t>(), p["height"].get<uint32_t>());
-  if (sizes.empty() || (p.contains("levels") && p["levels"] != sizes.size())) {
-    out.push_back(make_finding(msg::moments_bad_parameters, "zero size, or levels differs from the halving rule"));
+  if (!p.contains("shift") || !p["shift"].is_number() || !std::isfinite(p["shift"].get<double>())) {
+    out.push_back(make_finding(msg::moments_bad_parameters, "parameters.shift missing or not finite"));
     return;
   }
   const auto read =

@@ -27,18 +27,20 @@ struct Tolerance {
 void check_sh(const Asset& a, std::vector<Finding>& out) {
   const auto& p = a.metadata()["parameters"];
   auto unsigned_key = [&](const char* key) { return p.is_object() && p.contains(key) && p[key].is_number_unsigned(); };
-  if (!unsigned_key("width") || !unsigned_key("height") || !unsigned_key("levels") || !unsigned_key("order") ||
-      !p.contains("precision") || !p["precision"].is_string() || !p.contains("window") || !p["window"].is_string()) {
-    out.push_back(make_finding(msg::sh_bad_parameters, "width, height, levels, order, precision or window missing"));
+  std::vector<LevelSize> sizes;  // width, height and levels read as every pyramid kind reads them
+  if (std::string problem = parse_mip_parameters(p, sizes); !problem.empty()) {
+    out.push_back(make_finding(msg::sh_bad_parameters, problem));
     return;
   }
-  const auto sizes = mip_level_sizes(p["width"].get<uint32_t>(), p["height"].get<uint32_t>());
-  const uint32_t order = p["order"].get<uint32_t>();
+  if (!unsigned_key("order") || !p.contains("precision") || !p["precision"].is_string() || !p.contains("window") ||
+      !p["window"].is_string()) {
+    out.push_back(make_finding(msg::sh_bad_parameters, "order, precision or window missing"));
+    return;
+  }
+  const uint64_t order = p["order"].get<uint64_t>();
   const std::string precision = p["precision"].get<std::string>();
-  if (sizes.empty() || order > kMaxOrder || p["levels"].get<uint64_t>() != sizes.size() ||
-      (precision != "f16" && precision != "f32")) {
-    out.push_back(make_finding(msg::sh_bad_parameters, "zero size, order above 256, a level count other than " +
-                                                           std::to_string(sizes.size()) + " or precision not f16/f32"));
+  if (order > kMaxOrder || (precision != "f16" && precision != "f32")) {
+    out.push_back(make_finding(msg::sh_bad_parameters, "order above 256 or precision not f16/f32"));
     return;
   }
   const uint64_t count = uint64_t(order + 1) * (order + 1);

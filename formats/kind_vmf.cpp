@@ -20,21 +20,20 @@ void check_vmf(const Asset& a, std::vector<Finding>& out) {
   auto has = [&](const char* key, bool is_unsigned) {
     return p.is_object() && p.contains(key) && (is_unsigned ? p[key].is_number_unsigned() : p[key].is_number());
   };
-  if (!has("width", true) || !has("height", true) || !has("levels", true) || !has("lobes", true) ||
-      !has("feature_channels", true) || !has("kappa_max", false) || !has("align", false)) {
-    out.push_back(make_finding(msg::vmf_bad_parameters,
-                               "width, height, levels, lobes, feature_channels, kappa_max or align missing"));
+  std::vector<LevelSize> sizes;  // width, height and levels read as every pyramid kind reads them
+  if (std::string problem = parse_mip_parameters(p, sizes); !problem.empty()) {
+    out.push_back(make_finding(msg::vmf_bad_parameters, problem));
     return;
   }
-  const auto sizes = mip_level_sizes(p["width"].get<uint32_t>(), p["height"].get<uint32_t>());
+  if (!has("lobes", true) || !has("feature_channels", true) || !has("kappa_max", false) || !has("align", false)) {
+    out.push_back(make_finding(msg::vmf_bad_parameters, "lobes, feature_channels, kappa_max or align missing"));
+    return;
+  }
   const uint64_t J = p["lobes"].get<uint64_t>(), F = p["feature_channels"].get<uint64_t>();
   const double kappa_max = p["kappa_max"].get<double>(), align = p["align"].get<double>();
-  if (sizes.empty() || J < 1 || J > 16 || F > 4 || p["levels"].get<uint64_t>() != sizes.size() || !(kappa_max > 0.0) ||
-      !(align >= 0.0)) {
+  if (J < 1 || J > 16 || F > 4 || !(kappa_max > 0.0) || !(align >= 0.0)) {
     out.push_back(make_finding(msg::vmf_bad_parameters,
-                               "zero size, lobes outside 1..16, more than 4 feature channels, "
-                               "a level count other than " +
-                                   std::to_string(sizes.size()) + ", kappa_max <= 0 or align < 0"));
+                               "lobes outside 1..16, more than 4 feature channels, kappa_max <= 0 or align < 0"));
     return;
   }
   std::vector<std::vector<float>> levels, features;

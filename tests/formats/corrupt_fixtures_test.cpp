@@ -351,6 +351,7 @@ std::vector<CorruptCase> corrupt_cases() {
       {"ColormapEntryNotTheConvolution", 17007, [] { return test::colormap_with_table_delta(2, 2, 0, -0.001f); }},
       {"MomentsNonFinite", 18001, [] { return test::moments_with_element(1, 1, [](float) { return std::nanf(""); }); }},
       {"MomentsShiftNotANumber", 18002, [] { return test::moments_with_parameter("shift", "0.25"); }},
+      {"MomentsLevelsDisagreeWithTheSize", 18002, [] { return test::moments_with_parameter("levels", 99); }},
       {"MomentsLevelShapeDisagreesWithWidth", 18003, [] { return test::moments_with_parameter("width", 6); }},
       {"MomentsLevel0SecondNotSquare", 18004,
        [] { return test::moments_with_element(0, 3, [](float m2) { return m2 * 1.01f + 1e-3f; }); }},
