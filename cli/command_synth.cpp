@@ -3,6 +3,7 @@
 // Sec. 5.2.2; libbake/synth/multiscale_synthesis.h). Deterministic: a window synthesized alone has the same pixels
 // as the same region of a larger window, whatever the thread count.
 #include <cctype>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -17,6 +18,29 @@
 
 namespace mbk::cli {
 namespace {
+
+// The comma-separated numbers of an option ("1,0.6,0.4"); Error(bad_command_line) naming the option and the part
+// that is empty, not a whole number (no leading blanks, nothing after it) or refused by `accept`. A trailing comma
+// is an empty part.
+template <class Accept>
+std::vector<double> comma_separated(const std::string& text, const std::string& option, const std::string& expected,
+                                    Accept accept) {
+  std::vector<double> values;
+  std::stringstream in(text + ",");  // the extra comma makes a trailing one show up as an empty part
+  for (std::string part; std::getline(in, part, ',');) {
+    size_t used = 0;
+    double v = 0.0;
+    try {
+      v = std::stod(part, &used);
+    } catch (const std::exception&) {
+      used = std::string::npos;
+    }
+    if (part.empty() || std::isspace(static_cast<unsigned char>(part[0])) || used != part.size() || !accept(v))
+      throw Error(ExitCode::bad_command_line, option + ": '" + part + "' is not " + expected);
+    values.push_back(v);
+  }
+  return values;
+}
 
 class SynthCommand : public Command {
  public:
@@ -48,38 +72,16 @@ class SynthCommand : public Command {
       throw Error(ExitCode::bad_command_line, "synth writes .png (16-bit) or .exr (float) files, not '" + ext + "'",
                   options_.output.path);
     options_.output.check_writable();
-    std::vector<int64_t> w;
-    std::stringstream in(options_.window);
-    for (std::string part; std::getline(in, part, ',');) {
-      size_t used = 0;
-      try {
-        w.push_back(std::stoll(part, &used));
-      } catch (const std::exception&) {
-        used = std::string::npos;
-      }
-      if (used != part.size() || part.empty() || std::isspace(static_cast<unsigned char>(part[0])))
-        throw Error(ExitCode::bad_command_line, "--window: '" + part + "' is not an integer");
-    }
-    if (w.size() != 4 || options_.window.back() == ',' || w[2] <= 0 || w[3] <= 0 || w[2] > 65536 || w[3] > 65536)
+    const std::vector<double> w = comma_separated(options_.window, "--window", "an integer",
+                                                  [](double v) { return v == std::floor(v) && std::abs(v) <= 0x1p62; });
+    if (w.size() != 4 || w[2] < 1 || w[3] < 1 || w[2] > 65536 || w[3] > 65536)
       throw Error(ExitCode::bad_command_line, "--window must be X,Y,W,H with 1 <= W, H <= 65536");
-    options_.synthesis.x = w[0];
-    options_.synthesis.y = w[1];
+    options_.synthesis.x = int64_t(w[0]);
+    options_.synthesis.y = int64_t(w[1]);
     options_.synthesis.width = uint32_t(w[2]);
     options_.synthesis.height = uint32_t(w[3]);
-    options_.synthesis.jitter.clear();
-    std::stringstream j(options_.jitter);
-    for (std::string part; std::getline(j, part, ',');) {
-      size_t used = 0;
-      double v = -1;
-      try {
-        v = std::stod(part, &used);
-      } catch (const std::exception&) {
-        used = std::string::npos;
-      }
-      if (used != part.size() || !(v >= 0.0 && v <= 1.0))
-        throw Error(ExitCode::bad_command_line, "--jitter: '" + part + "' is not a number in [0, 1]");
-      options_.synthesis.jitter.push_back(v);
-    }
+    options_.synthesis.jitter = comma_separated(options_.jitter, "--jitter", "a number in [0, 1]",
+                                                [](double v) { return v >= 0.0 && v <= 1.0; });
     options_.synthesis.correct_inconsistency = !options_.no_correction;
   }
 
