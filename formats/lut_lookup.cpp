@@ -7,15 +7,27 @@
 #include "formats/error.h"
 
 namespace mbk {
+namespace {
+
+// Index cells per knot interval: the two grids' knots crowd in places (both sides of an atom's rise in x, the
+// sparse tails in z), so a finer index keeps the search to a knot or two there (4 bytes per cell).
+constexpr size_t kCellsPerKnot = 4;
+
+}  // namespace
 
 KnotInterpolant::KnotInterpolant(std::span<const float> keys, std::span<const float> values)
     : keys_(keys.begin(), keys.end()), values_(values.begin(), values.end()) {
   if (keys_.empty() || keys_.size() != values_.size() || keys_.size() > UINT32_MAX)
     throw Error(ExitCode::runtime_failure, "internal: a knot table needs as many keys as values, at least one");
   const size_t M = keys_.size();
+  slopes_.resize(M > 1 ? M - 1 : 0);
+  for (size_t i = 0; i + 1 < M; ++i) {
+    const double dk = double(keys_[i + 1]) - double(keys_[i]);
+    slopes_[i] = dk > 0.0 ? (double(values_[i + 1]) - double(values_[i])) / dk : 0.0;  // 0: unvalidated knots
+  }
   const double span = double(keys_.back()) - double(keys_.front());
   if (M < 2 || !(span > 0.0) || !std::isfinite(span)) return;  // constant, or a table validate refuses
-  const size_t cells = M - 1;
+  const size_t cells = kCellsPerKnot * (M - 1);
   cell_scale_ = double(cells) / span;
   // first_[c] = the last knot whose cell is below c (0 if none): every x in cell c is >= that knot, because
   // cell_of is non-decreasing in x. first_[cells] = M - 1.
@@ -51,9 +63,7 @@ LutSample KnotInterpolant::operator()(double x) const {
         1;
   }
   i = std::min(i, keys_.size() - 2);
-  const double k0 = keys_[i], k1 = keys_[i + 1], v0 = values_[i], v1 = values_[i + 1];
-  if (!(k1 > k0)) return {v0, 0.0};  // unvalidated knots: stay finite
-  return {v0 + (x - k0) / (k1 - k0) * (v1 - v0), (v1 - v0) / (k1 - k0)};
+  return {values_[i] + (x - double(keys_[i])) * slopes_[i], slopes_[i]};
 }
 
 }  // namespace mbk

@@ -6,15 +6,15 @@
 // A map through knots (k_0, v_0) .. (k_{M-1}, v_{M-1}), keys and values strictly increasing. For k_0 <= x <= k_{M-1}
 // and M >= 2, with i the largest index <= M - 2 such that k_i <= x:
 //
-//     f = (x - k_i) / (k_{i+1} - k_i),   value = v_i + f (v_{i+1} - v_i),   derivative = (v_{i+1} - v_i) / (k_{i+1} -
-//     k_i),
+//     d_i = (v_{i+1} - v_i) / (k_{i+1} - k_i),     value = v_i + (x - k_i) d_i,     derivative = d_i,
 //
-// all in double from the stored floats; so on [k_i, k_{i+1}) the derivative is that segment's slope, and at k_{M-1}
+// all in double from the stored floats (d_i computed once per segment); so on [k_i, k_{i+1}) the derivative is
+// that segment's slope, and at k_{M-1}
 // it is the last segment's. Below k_0 (and for NaN) the value is v_0, above k_{M-1} it is v_{M-1}, derivative 0
 // (the clamped map is flat there); with one knot the map is the constant v_0. The forward table G_T reads a
 // channel's knots as (x, z), the inverse G^-1_T as (z, x).
 //
-// Finding i: any search gives the same i. Ours is O(1) on average: a uniform index of M - 1 cells over
+// Finding i: any search gives the same i. Ours is O(1) on average: a uniform index of 4 (M - 1) cells over
 // [k_0, k_{M-1}] stores, per cell, the knots that can bracket an x falling in it (KnotInterpolant below).
 #pragma once
 
@@ -42,6 +42,7 @@ class KnotInterpolant {
  private:
   size_t cell_of(double x) const;
   std::vector<float> keys_, values_;
+  std::vector<double> slopes_;  // d_i, M - 1 of them
   // Cell c holds x with cell_of(x) == c; the knot index that brackets such an x lies in [first_[c], first_[c + 1]].
   std::vector<uint32_t> first_;
   double cell_scale_ = 0.0;  // cells per unit of key
