@@ -1,5 +1,6 @@
-// `microbake compare A B [--format text|json] [--max-rmse X]`: error metrics of image A against the
-// reference B (libbake/eval/image_difference.h: RMSE, relative MSE, PSNR with peak 1). Exit 6 when
+// `microbake compare A B [--format text|json] [--max-rmse X] [--block N]`: error metrics of image A against the
+// reference B (libbake/eval/image_difference.h: RMSE, relative MSE, PSNR with peak 1, relative L1 of block means). Exit
+// 6 when
 // --max-rmse is given and the RMSE is above it; images of different sizes are invalid input (3).
 #include <cmath>
 #include <cstdio>
@@ -21,6 +22,11 @@ class CompareCommand : public Command {
     add_format_option(app, options_.format);
     app.add_option("--max-rmse", options_.max_rmse, "Exit 6 when the RMSE is above this")
         ->check(CLI::NonNegativeNumber);
+    app.add_option("--block", options_.block,
+                   "Side in pixels of the blocks of the block_relative_l1 metric (sum |block mean A - block mean B| "
+                   "/ sum |block mean B|)")
+        ->check(CLI::Range(1u, 65536u))
+        ->default_val(8u);
   }
 
   int run() override {
@@ -35,7 +41,7 @@ class CompareCommand : public Command {
                   options_.a + " vs " + options_.b);
     ImageDifference d;
     try {
-      d = compare_images(a, b);
+      d = compare_images(a, b, options_.block);
     } catch (const Error& e) {
       throw Error(e.code(), e.what(), options_.a + " vs " + options_.b + (e.where().empty() ? "" : ", " + e.where()));
     }
@@ -52,6 +58,9 @@ class CompareCommand : public Command {
                           {"psnr_db", std::isfinite(d.psnr_db) ? nlohmann::json(d.psnr_db) : nlohmann::json()},
                           {"psnr_peak", 1.0},
                           {"max_abs", d.max_abs},
+                          {"block", d.block},
+                          {"block_relative_l1",
+                           std::isfinite(d.block_relative_l1) ? nlohmann::json(d.block_relative_l1) : nlohmann::json()},
                           {"max_rmse", options_.max_rmse ? nlohmann::json(*options_.max_rmse) : nlohmann::json()},
                           {"within_threshold", !above}};
       std::cout << j.dump(2) << "\n";
@@ -64,6 +73,7 @@ class CompareCommand : public Command {
       else
         std::printf("psnr:         inf (identical)\n");
       std::printf("max_abs:      %.6g\n", d.max_abs);
+      std::printf("block_l1:     %.6g (relative L1 of %ux%u block means)\n", d.block_relative_l1, d.block, d.block);
     }
     std::fflush(stdout);
     if (above) {
@@ -80,6 +90,7 @@ class CompareCommand : public Command {
     std::string a, b;
     OutputFormat format = OutputFormat::text;
     std::optional<double> max_rmse;
+    uint32_t block = 8;
   } options_;
 };
 

@@ -1,4 +1,4 @@
-// `microbake lut IN -o OUT.mbk [--size N]`: bakes the standardization LUTs of an example normal map for
+// `microbake lut IN -o OUT.mbk [--size N]`: bakes the standardization knots of an example normal map for
 // histogram-preserving blending of glints (asset kind `lut`, libbake/glint/lut_asset.h).
 #include <iomanip>
 #include <iostream>
@@ -18,7 +18,8 @@ class LutCommand : public Command {
     add_normal_map_input(app, options_.input);
     add_output_option(app, options_.output, "standardization LUT asset (.mbk)");
     app.add_option("--size", options_.size,
-                   "Samples per table (G and G^-1 of n_x and n_y); 128 reproduces the paper's setting")
+                   "Grid points per axis: knots of G at this many x and this many z positions per channel, plus the "
+                   "example's repeated values exactly; 128 is the paper's table size")
         ->check(CLI::Range(kLutMinSize, kLutMaxSize))
         ->default_val(kLutDefaultSize);
     add_run_options(app, options_.run);
@@ -40,9 +41,10 @@ class LutCommand : public Command {
     if (!options_.run.quiet) {
       const LutChannelStatistics &x = lut.statistics[0], &y = lut.statistics[1];
       std::cout << std::setprecision(3) << "lut: wrote " << options_.output.path << " (" << input.map.width << "x"
-                << input.map.height << ", " << options_.size << " samples per table; round trip n_x "
-                << x.round_trip_error << ", n_y " << y.round_trip_error << "; clipped tail mass n_x "
-                << x.clipped_tail_mass << ", n_y " << y.clipped_tail_mass;
+                << input.map.height << ", grid " << options_.size << ": " << x.knots << " + " << y.knots
+                << " knots; max |G_T - G| n_x " << x.forward_error << ", n_y " << y.forward_error
+                << "; max |G^-1_T - G^-1| n_x " << x.inverse_error << ", n_y " << y.inverse_error
+                << "; clipped tail mass n_x " << x.clipped_tail_mass << ", n_y " << y.clipped_tail_mass;
       print_bake_times(std::cout, input.record, load_seconds, bake_seconds, write_seconds);
     }
     return 0;

@@ -1,4 +1,4 @@
-// `microbake render SCENE.json -o OUT.{exr,png} [--spp N] [--reference N] [--assets DIR]`: the reference
+// `microbake render SCENE.json -o OUT.{exr,png} [--spp N] [--reference N] [--seed S] [--assets DIR]`: the reference
 // shader evaluator (libbake/eval/renderer.h). EXR output is linear radiance, PNG is tone-mapped for viewing
 // (libbake/eval/render_output.h). Effects read their baked assets from the asset folder (default
 // <scene folder>/<scene stem>.assets, as `bake` writes it); --reference needs no assets.
@@ -27,6 +27,11 @@ class RenderCommand : public Command {
            "--reference", options_.reference,
            "Ground truth instead: N x N sub-pixel rays per pixel with unfiltered normals from the raw maps (no assets)")
         ->check(CLI::Range(1u, 256u));
+    app.add_option("--seed", options_.seed,
+                   "Seed of the sub-pixel jitter: two references with different seeds measure the reference's own "
+                   "noise floor")
+        ->check(CLI::Range(0u, 4294967295u))
+        ->default_val(0u);
     app.add_option("--assets", options_.assets,
                    "Folder of baked assets (default: <scene folder>/<scene stem>.assets, as 'bake' writes)");
     add_run_options(app, options_.run);
@@ -49,6 +54,7 @@ class RenderCommand : public Command {
     RenderSettings settings;
     settings.spp = options_.spp;
     settings.reference = options_.reference;
+    settings.seed = options_.seed;
     settings.asset_folder =
         options_.assets.empty() ? default_asset_folder(scene) : std::filesystem::path(options_.assets);
     const RenderInputs inputs = load_render_inputs(scene, settings);
@@ -71,6 +77,7 @@ class RenderCommand : public Command {
     OutputOption output;
     uint32_t spp = 1;
     uint32_t reference = 0;
+    uint32_t seed = 0;
     std::string assets;
     RunOptions run;
   } options_;

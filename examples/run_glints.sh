@@ -4,8 +4,10 @@
 # lights and a sky. Generates the examples, bakes ONLY their lut and rmq assets, renders the scene with the
 # glint P-NDF (the evaluator, 1 sample per pixel), with --reference (brute force over the infinite
 # microstructure: the exact point NDF of 16 x 16 rays per pixel) and with plain normal mapping (the same scene
-# without the effect, examples/scenes/glints_plain.json), compares both with the reference (per pixel and on
-# 8 x 8 pixel blocks, box-averaged with oiiotool) and prints the times.
+# without the effect, examples/scenes/glints_plain.json), a second reference with another jitter seed (the
+# reference's own noise floor), compares each with the reference (per pixel, and the relative L1 of 8 x 8 pixel
+# block means: `compare --block 8`) and prints the times. The effect is within the goal where its block L1 is
+# at most twice the floor's.
 #
 #   examples/run_glints.sh [MICROBAKE [OUT_DIR]]
 set -euo pipefail
@@ -25,15 +27,13 @@ out="$(cd "$out" && pwd)"
 "$exe" bake "$plain" --out-dir "$out/plain_assets"
 "$exe" render "$scene" --assets "$out/assets" -o "$out/glints.exr"
 "$exe" render "$scene" --reference 16 -o "$out/glints_reference.exr"
+"$exe" render "$scene" --reference 16 --seed 1 -o "$out/glints_reference_seed1.exr"
 "$exe" render "$plain" --assets "$out/plain_assets" -o "$out/glints_plain.exr"
 for name in glints glints_reference glints_plain; do
   oiiotool "$out/$name.exr" --colorconvert linear sRGB -o "$out/$name.png"
-  oiiotool "$out/$name.exr" --resize:filter=box 48x27 -o "$out/${name}_blocks.exr"
   echo "$name: $(iinfo --stats "$out/$name.exr" | grep 'Stats Avg' | sed 's/ *Stats Avg: //')"
 done
-for name in glints glints_plain; do
-  echo "== $name against the reference, per pixel"
-  "$exe" compare "$out/$name.exr" "$out/glints_reference.exr"
-  echo "== $name against the reference, 8 x 8 pixel blocks"
-  "$exe" compare "$out/${name}_blocks.exr" "$out/glints_reference_blocks.exr"
+for name in glints_reference_seed1 glints glints_plain; do
+  echo "== $name against the reference"
+  "$exe" compare "$out/$name.exr" "$out/glints_reference.exr" --block 8
 done

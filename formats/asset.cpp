@@ -118,7 +118,9 @@ std::optional<ParsedContainer> parse_container(std::span<const uint8_t> bytes, s
     if (!p.metadata[key].is_object())
       return fail(msg::metadata_wrong_type, std::string("'") + key + "' must be an object", {{"key", key}});
   const AssetKind* kind = find_kind(h.kind);
-  if (!kind) return fail(msg::unknown_kind, "kind id " + std::to_string(h.kind), {{"kind_id", h.kind}});
+  if (!kind)
+    return fail(msg::unknown_kind, "kind id " + std::to_string(h.kind) + std::string(retired_kind_note(h.kind)),
+                {{"kind_id", h.kind}});
   if (!p.metadata["kind"].is_string() || p.metadata["kind"].get<std::string>() != kind->name)
     return fail(msg::kind_mismatch,
                 "header kind is '" + std::string(kind->name) + "', metadata says " + p.metadata["kind"].dump());

@@ -1,6 +1,8 @@
 // The table of asset kinds (see asset_kind.h).
 #include "formats/asset_kind.h"
 
+#include "formats/lut_layout.h"
+
 namespace mbk {
 
 std::span<const AssetKind> asset_kinds() {
@@ -19,6 +21,13 @@ const AssetKind* find_kind(std::string_view name) {
   for (const auto& k : asset_kinds())
     if (k.name == name) return &k;
   return nullptr;
+}
+
+std::string_view retired_kind_note(uint32_t id) {
+  if (id == kRetiredLutKindId)
+    return " (uniform lut tables of microbake 0.1, retired because they misread repeated values: rebake with "
+           "'microbake lut')";
+  return "";
 }
 
 }  // namespace mbk

@@ -39,6 +39,8 @@ struct AssetKind {
 std::span<const AssetKind> asset_kinds();
 const AssetKind* find_kind(uint32_t id);
 const AssetKind* find_kind(std::string_view name);
+// For a kind id that once existed and was retired: what it was and what to do (" (...)"); "" otherwise.
+std::string_view retired_kind_note(uint32_t id);
 
 // The declarations of each kind, one file each.
 AssetKind mip_kind();

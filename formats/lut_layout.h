@@ -1,20 +1,19 @@
-// The layout and lookup convention of asset kind 2, `lut` (standardization LUTs; formats/SPEC.md "Kind 2: lut"),
-// shared by the baker (libbake/glint/standardization_sampling.h), the evaluator's lookups
-// (formats/lut_lookup.h) and `validate` (formats/kind_lut.cpp), so that all three agree to the bit.
+// The layout of asset kind 10, `lut` (standardization knot tables; formats/SPEC.md "Kind 10: lut"), shared by the
+// baker (libbake/glint/standardization_sampling.h), the evaluator's lookups (formats/lut_lookup.h) and `validate`
+// (formats/kind_lut.cpp), so that all three agree to the bit.
 //
-// Per channel c (0 = n_x, 1 = n_y) a lut asset holds two tables of `size` samples each:
-// - forward:  G   on the example's value range [x_lo, x_hi] (values are Gaussian z),
-// - inverse:  G^-1 on the Gaussian range [z_lo, z_hi] = [G(x_lo), G(x_hi)] (values are normal components),
-// and, for each, a slope table of size - 1 entries: the exact derivative of its piecewise-linear interpolant.
+// Per channel c (n_x, n_y) a lut asset holds one section `knots_<channel>` of M rows (x_i, z_i), f32: knots of the
+// standardization transform G of that channel (z_i = G(x_i), rounded to float), strictly increasing in x and in z.
+// The forward map G_T is the piecewise-linear interpolant through (x_i, z_i); the inverse map G^-1_T is the one
+// through (z_i, x_i): the same segments read the other way, so the two are exact inverses of each other. One knot
+// (M = 1) is a constant channel: G_T = z_0 = 0 and G^-1_T = x_0 everywhere.
 //
-// Lookup convention (the only one): sample j of a table over [lo, hi] sits at
+// Parameter `size` (2..65536) is the resolution of the two uniform grids the knots come from (x over [x_lo, x_hi],
+// z over [z_lo, z_hi]), with the example's heavily repeated values added exactly; so 1 <= M <= 3 size.
 //
-//     s_j = lo + j (hi - lo) / (size - 1),      j = 0 .. size - 1      (s_0 = lo, s_{size-1} = hi exactly),
-//
-// i.e. texel centres of a 1-D texture of `size` texels whose first and last centres are lo and hi. Between
-// samples the table is interpolated linearly; below lo it is the first sample and above hi the last (every index
-// clamps). Slope entry j is (v_{j+1} - v_j) / ((hi - lo) / (size - 1)), the derivative on [s_j, s_{j+1}); 0 when
-// lo == hi (then every sample is equal).
+// Kind 2 was the same transform as uniform forward and inverse tables (microbake 0.1). Its forward table could not
+// follow G across a value shared by many texels (G jumps there), so blends through it rendered another surface;
+// kind 2 is retired and refused with a message to rebake.
 #pragma once
 
 #include <cstdint>
@@ -22,25 +21,21 @@
 
 namespace mbk {
 
-inline constexpr uint32_t kLutKindId = 2;
+inline constexpr uint32_t kLutKindId = 10;
+inline constexpr uint32_t kRetiredLutKindId = 2;
 inline constexpr uint32_t kLutMinSize = 2;
 inline constexpr uint32_t kLutMaxSize = 65536;
 inline constexpr uint32_t kLutDefaultSize = 4096;
 inline constexpr uint32_t kLutChannels = 2;
 inline constexpr std::string_view kLutChannelNames[kLutChannels] = {"n_x", "n_y"};
+inline constexpr std::string_view kLutKnotSections[kLutChannels] = {"knots_n_x", "knots_n_y"};
+inline constexpr uint32_t kLutKnotColumns = 2;  // (x, z)
 
-// Sections, all f32: domains [2, 4] holding (x_lo, x_hi, z_lo, z_hi) per channel; forward and inverse
-// [2, size]; forward_slope and inverse_slope [2, size - 1].
-inline constexpr std::string_view kLutDomainsSection = "domains";
-inline constexpr std::string_view kLutForwardSection = "forward";
-inline constexpr std::string_view kLutForwardSlopeSection = "forward_slope";
-inline constexpr std::string_view kLutInverseSection = "inverse";
-inline constexpr std::string_view kLutInverseSlopeSection = "inverse_slope";
-inline constexpr uint32_t kLutDomainValues = 4;
+// The most knots a channel of a table of `size` may have: two uniform grids and at most size heavy values.
+inline constexpr uint64_t lut_max_knots(uint32_t size) { return 3 * uint64_t(size); }
 
-// s_j above (exactly hi at j = size - 1).
+// Sample j of the uniform grid of `size` points over [lo, hi]: lo + j (hi - lo) / (size - 1), exactly hi at
+// j = size - 1.
 double lut_sample_position(double lo, double hi, uint32_t size, uint32_t j);
-// The slope of the interpolant between samples v0 = v_j and v1 = v_{j+1}; 0 when lo == hi.
-double lut_interval_slope(double lo, double hi, uint32_t size, double v0, double v1);
 
 }  // namespace mbk

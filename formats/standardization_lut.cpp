@@ -5,45 +5,29 @@
 
 namespace mbk {
 
+StandardizationChannelTables::StandardizationChannelTables(std::vector<float> x, std::vector<float> z)
+    : forward_(x, z), inverse_(z, x) {}
+
 StandardizationLut read_standardization_lut(const Asset& asset) {
   if (asset.kind().id != kLutKindId)
     throw Error(ExitCode::invalid_input, "expected a lut asset, found kind '" + std::string(asset.kind().name) + "'",
                 asset.where());
-  const SectionInfo& forward = asset.section(std::string(kLutForwardSection));
-  const uint64_t size = forward.shape.size() == 2 ? forward.shape[1] : 0;
-  auto expect_shape = [&](std::string_view name, uint64_t length) {
-    const SectionInfo& s = asset.section(std::string(name));
-    if (s.shape != std::vector<uint64_t>{kLutChannels, length})
-      throw Error(ExitCode::invalid_input,
-                  "lut section '" + std::string(name) + "' should have shape [2, " + std::to_string(length) + "]",
-                  asset.where());
-  };
-  if (size < kLutMinSize || size > kLutMaxSize)
-    throw Error(ExitCode::invalid_input, "lut tables must have 2..65536 samples", asset.where());
-  expect_shape(kLutForwardSection, size);
-  expect_shape(kLutInverseSection, size);
-  expect_shape(kLutForwardSlopeSection, size - 1);
-  expect_shape(kLutInverseSlopeSection, size - 1);
-  expect_shape(kLutDomainsSection, kLutDomainValues);
-
-  const std::vector<float> domains = asset.read<float>(std::string(kLutDomainsSection));
-  const std::vector<float> fwd = asset.read<float>(std::string(kLutForwardSection));
-  const std::vector<float> fwd_slope = asset.read<float>(std::string(kLutForwardSlopeSection));
-  const std::vector<float> inv = asset.read<float>(std::string(kLutInverseSection));
-  const std::vector<float> inv_slope = asset.read<float>(std::string(kLutInverseSlopeSection));
+  const nlohmann::json& parameters = asset.metadata().contains("parameters") ? asset.metadata()["parameters"] : nullptr;
+  const nlohmann::json size = parameters.is_object() ? parameters.value("size", nlohmann::json()) : nullptr;
+  if (!size.is_number_unsigned() || size.get<uint64_t>() < kLutMinSize || size.get<uint64_t>() > kLutMaxSize)
+    throw Error(ExitCode::invalid_input, "lut parameters.size must be an integer in 2..65536", asset.where());
   StandardizationLut lut;
-  lut.size = uint32_t(size);
+  lut.size = size.get<uint32_t>();
   for (uint32_t c = 0; c < kLutChannels; ++c) {
-    StandardizationChannelTables& t = lut.channels[c];
-    const float* d = &domains[size_t(c) * kLutDomainValues];
-    t.x_lo = d[0], t.x_hi = d[1], t.z_lo = d[2], t.z_hi = d[3];
-    auto row = [c](const std::vector<float>& all, uint64_t length) {
-      return std::vector<float>(all.begin() + ptrdiff_t(c * length), all.begin() + ptrdiff_t((c + 1) * length));
-    };
-    t.forward = row(fwd, size);
-    t.inverse = row(inv, size);
-    t.forward_slope = row(fwd_slope, size - 1);
-    t.inverse_slope = row(inv_slope, size - 1);
+    const std::string name(kLutKnotSections[c]);
+    const SectionInfo& s = asset.section(name);
+    if (s.shape.size() != 2 || s.shape[1] != kLutKnotColumns || s.shape[0] < 1 || s.shape[0] > lut_max_knots(lut.size))
+      throw Error(ExitCode::invalid_input,
+                  "lut section '" + name + "' should have shape [M, 2] with 1 <= M <= 3 x size", asset.where());
+    const std::vector<float> rows = asset.read<float>(name);
+    std::vector<float> x(s.shape[0]), z(s.shape[0]);
+    for (size_t i = 0; i < x.size(); ++i) x[i] = rows[2 * i], z[i] = rows[2 * i + 1];
+    lut.channels[c] = StandardizationChannelTables(std::move(x), std::move(z));
   }
   return lut;
 }

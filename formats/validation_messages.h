@@ -89,21 +89,14 @@ inline constexpr MessageInfo mip_parent_not_mean{11005, Severity::error,
                                                  "mip: texel is not the mean of the finest normals it covers"};
 inline constexpr MessageInfo mip_bad_parameters{11006, Severity::error,
                                                 "mip: parameters missing or inconsistent with the sections"};
-// 12xxx: kind 2, `lut` (standardization LUTs of glints)
-inline constexpr MessageInfo lut_non_finite{12001, Severity::error, "lut: non-finite value"};
-inline constexpr MessageInfo lut_bad_parameters{12002, Severity::error,
+// 20xxx: kind 10, `lut` (standardization knots of glints; 12xxx were the retired kind 2's)
+inline constexpr MessageInfo lut_non_finite{20001, Severity::error, "lut: non-finite value"};
+inline constexpr MessageInfo lut_bad_parameters{20002, Severity::error,
                                                 "lut: parameters missing or out of range (size in 2..65536)"};
-inline constexpr MessageInfo lut_section_shape{12003, Severity::error,
+inline constexpr MessageInfo lut_section_shape{20003, Severity::error,
                                                "lut: section shape does not match the parameters"};
-inline constexpr MessageInfo lut_bad_domain{12004, Severity::error,
-                                            "lut: table domain reversed (lo > hi), or empty with a non-constant table"};
-inline constexpr MessageInfo lut_not_monotone{12005, Severity::error, "lut: table decreases"};
-inline constexpr MessageInfo lut_negative_slope{12006, Severity::error, "lut: derivative table is negative"};
-inline constexpr MessageInfo lut_slope_mismatch{12007, Severity::error,
-                                                "lut: derivative table is not the slope of the interpolated table"};
-inline constexpr MessageInfo lut_ends_mismatch{
-    12008, Severity::error,
-    "lut: a table's end values are not the other table's domain (forward and inverse disagree)"};
+inline constexpr MessageInfo lut_bad_domain{20004, Severity::error, "lut: a one-knot (constant) channel with z != 0"};
+inline constexpr MessageInfo lut_not_monotone{20005, Severity::error, "lut: knots not strictly increasing in x or z"};
 // 13xxx: kind 3, `rmq` (RMQ min/max tables of glints)
 inline constexpr MessageInfo rmq_bad_parameters{
     13001, Severity::error, "rmq: parameters missing or inconsistent (width, height, patch, levels, bits)"};

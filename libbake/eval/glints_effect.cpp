@@ -65,7 +65,9 @@ ShaderPtr glints_effect_shader(const EffectShaderRequest& request) {
   const uint32_t W = example->map.width, H = example->map.height;
 
   if (request.mode == EvalMode::reference) {
-    // No assets: the exact example, standardized here when the blend needs it.
+    // No assets: the exact example, standardized here when the blend needs it, by the baker's own function at the
+    // material's lut_size: the very knots the effect's asset holds (test: GlintsEffect.ReferenceUsesTheAssetsKnots),
+    // so effect and reference render one microstructure.
     struct Reference {
       std::shared_ptr<const LoadedNormalMap> example;
       StandardizationLut lut;
@@ -74,7 +76,7 @@ ShaderPtr glints_effect_shader(const EffectShaderRequest& request) {
     auto r = std::make_shared<Reference>();
     r->example = example;
     if (settings.mode == GlintBlendMode::histogram)
-      r->lut = bake_standardization_lut(example->map, 65536, Progress::silent()).tables;
+      r->lut = bake_standardization_lut(example->map, request.use.options.at("lut_size"), Progress::silent()).tables;
     r->point = std::make_unique<GlintPointQuery>(example->map, settings.patch, settings.seed, settings.mode, &r->lut);
     const double sigma_r = settings.sigma_r;
     return std::make_shared<GlintShader>([r, sigma_r, W, H](const ShadingContext& c) {

@@ -15,9 +15,30 @@ std::string size_text(const Image& i) {
   return std::to_string(i.width) + "x" + std::to_string(i.height) + " with " + std::to_string(i.channels) + " channels";
 }
 
+// sum over blocks and channels of |block mean of a - block mean of b| / sum of |block mean of b|.
+double block_relative_l1(const Image& a, const Image& b, uint32_t block) {
+  double diff = 0, ref = 0;
+  for (uint32_t by = 0; by < a.height; by += block)
+    for (uint32_t bx = 0; bx < a.width; bx += block)
+      for (uint32_t c = 0; c < a.channels; ++c) {
+        double sa = 0, sb = 0;
+        const uint32_t y1 = std::min(a.height, by + block), x1 = std::min(a.width, bx + block);
+        for (uint32_t y = by; y < y1; ++y)
+          for (uint32_t x = bx; x < x1; ++x) {
+            const size_t i = (size_t(y) * a.width + x) * a.channels + c;
+            sa += a.pixels[i], sb += b.pixels[i];
+          }
+        const double n = double(y1 - by) * double(x1 - bx);
+        diff += std::abs(sa - sb) / n;
+        ref += std::abs(sb) / n;
+      }
+  if (ref > 0) return diff / ref;
+  return diff > 0 ? std::numeric_limits<double>::infinity() : 0.0;
+}
+
 }  // namespace
 
-ImageDifference compare_images(const Image& a, const Image& b) {
+ImageDifference compare_images(const Image& a, const Image& b, uint32_t block) {
   if (a.width != b.width || a.height != b.height || a.channels != b.channels)
     throw Error(ExitCode::invalid_input, "images differ in size: " + size_text(a) + " vs " + size_text(b));
   ImageDifference d;
@@ -40,6 +61,9 @@ ImageDifference compare_images(const Image& a, const Image& b) {
   d.rmse = std::sqrt(d.mse);
   d.relative_mse = sum_rel / double(d.values);
   d.psnr_db = d.mse > 0 ? 10.0 * std::log10(1.0 / d.mse) : std::numeric_limits<double>::infinity();
+  if (block == 0) throw Error(ExitCode::runtime_failure, "internal: block side 0");
+  d.block = block;
+  d.block_relative_l1 = block_relative_l1(a, b, block);
   return d;
 }
 

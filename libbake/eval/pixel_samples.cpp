@@ -12,10 +12,10 @@ SampleGrid sample_grid(uint32_t count) {
   return {count / rows, rows};
 }
 
-Vec2 sample_offset(uint32_t x, uint32_t y, uint32_t index, const SampleGrid& grid) {
-  const uint32_t i = index % grid.cols, j = index / grid.cols;
-  return Vec2((i + unit_from_hash(hash4(x, y, index, 0))) / grid.cols,
-              (j + unit_from_hash(hash4(x, y, index, 1))) / grid.rows);
+Vec2 sample_offset(uint32_t x, uint32_t y, uint32_t index, const SampleGrid& grid, uint32_t seed) {
+  const uint32_t i = index % grid.cols, j = index / grid.cols, stream = 2 * seed;
+  return Vec2((i + unit_from_hash(hash4(x, y, index, stream))) / grid.cols,
+              (j + unit_from_hash(hash4(x, y, index, stream + 1))) / grid.rows);
 }
 
 }  // namespace mbk

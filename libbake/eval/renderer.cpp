@@ -65,7 +65,7 @@ Image render_scene(const Scene& scene, const RenderInputs& inputs, const RenderS
     for (uint32_t x = 0; x < image.width; ++x) {
       Vec3 sum = Vec3::Zero();
       for (uint32_t s = 0; s < grid.count(); ++s) {
-        const Vec2 o = sample_offset(x, y, s, grid);
+        const Vec2 o = sample_offset(x, y, s, grid, settings.seed);
         sum += radiance_along(scene, shading, inputs.lighting, camera.ray(x + o.x(), y + o.y()));
       }
       const Vec3 pixel = sum / double(grid.count());

@@ -30,6 +30,7 @@ namespace mbk {
 struct RenderSettings {
   uint32_t spp = 1;                    // samples per pixel (render mode)
   uint32_t reference = 0;              // > 0: reference mode with reference x reference samples per pixel
+  uint32_t seed = 0;                   // sub-pixel jitter seed (pixel_samples.h); 0 is the default jitter
   std::filesystem::path asset_folder;  // where effects' assets are; empty: default_asset_folder(scene)
 };
 

@@ -9,16 +9,16 @@
 // - histogram ([Wang20] Eq. 6):  Z_k = G(I_k), n = G^-1(Z), Z = sum w_k Z_k / W (the variance blend in the
 //                                Gaussian space, mean 0), dZ_k = G'(I_k) g_k,
 //                                dn = (G^-1)'(Z) (sum (dw_k Z_k + w_k dZ_k) / W - Z dW / W),
-//                                G, G^-1 and their derivatives through the standardization LUT (lut_lookup.h:
-//                                the derivative tables are exact derivatives of the interpolants).
+//                                G, G^-1 and their derivatives through the standardization knots (lut_lookup.h:
+//                                derivatives are the slopes of the interpolants' segments).
 // - none ([Wang20] Sec. 6, flakes): the single patch of the NEAREST grid vertex (the corner with the largest
 //                                weight: f_0 >= 1/2 picks i + 1, likewise f_1), n = I_k, dn = g_k.
 // W >= 1/2 everywhere (its minimum, at a patch centre), so nothing divides by zero.
 // Seams and kinks (measure zero): J jumps across target patch borders (the weights' kinks; for `none` also
 // where the nearest vertex changes, f = 1/2, where n itself jumps), across texel-centre lines of each corner's
-// example point (bilinear kinks), and, for `histogram`, where I_k or Z crosses a LUT sample. On them the value
+// example point (bilinear kinks), and, for `histogram`, where I_k or Z crosses a knot. On them the value
 // is continuous (except `none`) and J is the one-sided derivative of the piece on the +u side (every floor
-// above picks that piece; the LUT picks the interval starting at the sample).
+// above picks that piece; the lookup picks the segment starting at the knot).
 #pragma once
 
 #include <cstdint>

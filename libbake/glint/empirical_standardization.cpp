@@ -46,6 +46,17 @@ double EmpiricalStandardization::gaussian_of_twice_rank(double twice_rank) const
   return -standard_normal_quantile((total - twice_rank) / total);
 }
 
+std::vector<float> EmpiricalStandardization::values_counted_at_least(uint64_t min_count) const {
+  std::vector<float> heavy;
+  uint64_t begin = 0;  // c_k = 2 r_k - 2 begin_k
+  for (size_t k = 0; k < values_.size(); ++k) {
+    const uint64_t count = twice_rank_[k] - 2 * begin;
+    if (count >= min_count) heavy.push_back(values_[k]);
+    begin += count;
+  }
+  return heavy;
+}
+
 double EmpiricalStandardization::forward(double x) const {
   if (x >= values_.back()) return gaussian_max_;
   if (!(x > values_.front())) return gaussian_min_;

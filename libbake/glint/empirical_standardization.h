@@ -45,6 +45,9 @@ class EmpiricalStandardization {
   size_t distinct_values() const { return values_.size(); }
   // u_1 < ... < u_K.
   std::span<const float> distinct() const { return values_; }
+  size_t count() const { return size_t(twice_count_ / 2); }  // N
+  // The distinct values u_k whose count c_k is at least `min_count` (the heavy runs, the atoms of F), ascending.
+  std::vector<float> values_counted_at_least(uint64_t min_count) const;
   // G(min) = Phi^-1(c_1 / 2N) and G(max) = -Phi^-1(c_K / 2N): where G^-1 stops varying. The Gaussian mass beyond
   // them, (c_1 + c_K) / (2N), is the channel's clipped tail mass (1 for a constant channel: both are 0).
   double gaussian_min() const { return gaussian_min_; }

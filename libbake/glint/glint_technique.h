@@ -14,13 +14,13 @@
 // `lut`) and the RMQ min/max tables of the range queries ([Wang20] Sec. 4.4, asset kind `rmq`).
 //
 // Implemented so far:
-// - Standardization LUTs (`microbake lut`, asset kind `lut`, id 2): standard_normal.h (exact Phi and
+// - Standardization knots (`microbake lut`, asset kind `lut`, id 10): standard_normal.h (exact Phi and
 //   Phi^-1), empirical_standardization.h (the exact transform G of one channel and its inverse),
-//   standardization_sampling.h (G^-1 sampled into a table, the forward table as the exact inverse of its
-//   interpolant, and both derivative tables), lut_asset.h (the bake). What reads the asset lives in formats/,
-//   the one home of evaluator-side lookups (a renderer needs formats/ only): formats/lut_layout.h (layout and
-//   sample positions, shared with `validate`), formats/lut_lookup.h (the one lookup convention, over plain
-//   arrays), formats/standardization_lut.h (the tables of an asset, as the evaluator reads them).
+//   standardization_sampling.h (knots (x, G(x)) at both grids and the atoms, read forward and back),
+//   lut_asset.h (the bake and its error statistics). What reads the asset lives in formats/, the one home of
+//   evaluator-side lookups (a renderer needs formats/ only): formats/lut_layout.h (layout and grid positions,
+//   shared with `validate`), formats/lut_lookup.h (the one lookup convention: KnotInterpolant),
+//   formats/standardization_lut.h (the knots of an asset, as the evaluator reads them).
 // - RMQ min/max tables (`microbake rmq`, asset kind `rmq`, id 3; [Wang20] Sec. 4.4, 5.1, Alg. 1-2):
 //   example_jacobian.h (the per-texel Jacobian), element_normal_bounds.h (leaf intervals: the element's
 //   reach), rmq_table.h (the sparse table, quantized; its deviations), rmq_asset.h (the bake); the layout, the
@@ -31,7 +31,7 @@
 //   bilinear weights), example_bilinear.h (the example read bilinearly between texel centres, clipped at the
 //   border, with its exact derivative), blended_normal.h (GlintPointQuery: n(u) and its analytic Jacobian for
 //   the blend modes none, linear, variance and histogram, including the derivatives of the weights, of W and
-//   of the LUTs).
+//   of the standardization).
 // - Range query ([Wang20] Sec. 4.3-4.5): blended_range.h (conservative bounds of the blended normal over a
 //   node of target texels from the four example patches' RMQ ranges pushed through the monotone blend, the
 //   weights and W = ||w|| bounded over the whole node; and each target texel's exact element bounds).
@@ -61,21 +61,24 @@
 // - Deviation [Heitz18]: ranks are MID-RANKS, so equal example values get one and the same Gaussian value and
 //   a constant channel maps to the constant 0 with zero derivative; sorting with arbitrary tie-breaking would
 //   map equal inputs to different outputs (tests: EmpiricalStandardization.TiesShareOneGaussianValue,
-//   StandardizationLut.ConstantChannelIsFlatAndFinite).
+//   StandardizationLut.ConstantAndTwoValuedChannels).
 // - Deviation [Heitz18]: G is continuous between example values (the mid-rank CDF interpolated linearly between
 //   consecutive distinct values, then Phi^-1), so G^-1(G(x)) = x exactly for the transform (test:
 //   EmpiricalStandardization.InverseUndoesForward).
-// - Deviation [Heitz18], [Wang20]: the forward table samples the exact inverse of the inverse table's interpolant
-//   rather than G itself, which bounds the round trip through the two tables by one forward step, (max - min) /
-//   (size - 1), for every distribution (standardization_sampling.h; test:
-//   StandardizationLut.RoundTripWithinOneForwardStep_GeneratedKinds).
-// - Deviation [Heitz18]: the inverse table is indexed by the Gaussian value z itself, over [G(min), G(max)],
-//   not by Phi(z) in [0, 1], so its derivative table is dG^-1/dz directly (the Jacobian needs no chain rule
-//   through Phi), and outside that range G^-1 is exactly the clamped end value, so clamping loses nothing
-//   (tests: StandardizationLut.LookupsClampOutsideTheirDomain, StandardizationLut.TailMassIsTheEndRanks).
-// - Deviation [Wang20]: the derivative tables are the exact derivatives of the stored piecewise-linear
-//   interpolants (one slope per interval), not differences of the continuous transform, so values and
-//   Jacobians stay consistent (test: StandardizationLut.SlopesAreFiniteDifferencesOfTheInterpolant).
+// - Deviation [Heitz18], [Wang20]: no uniform forward and inverse tables but one set of knots (x, G(x)), at a
+//   uniform x grid, at G^-1 of a uniform z grid and at every atom (a value of >= N / size texels), read as
+//   (x, z) forward and (z, x) inverse: the two maps are exact inverses, G is exact at atoms, and each map is
+//   within one grid step of the exact one, so the blended microstructure is the exact blend's whatever the
+//   size (standardization_sampling.h; tests: StandardizationLut.KnotsWithinOneStepOfTheExactTransform_*,
+//   StandardizationLut.AtomIsExactWhateverTheSize, BlendedField.MatchesTheExactTransformAtEveryTableSize_*).
+//   Uniform tables interpolate across an atom's rise and render another surface.
+// - Deviation [Heitz18]: the inverse is indexed by the Gaussian value z itself, over [G(min), G(max)], not by
+//   Phi(z) in [0, 1], so its derivative is dG^-1/dz directly (the Jacobian needs no chain rule through Phi),
+//   and outside that range G^-1 is exactly the clamped end value, so clamping loses nothing (tests:
+//   StandardizationLut.LookupsClampOutsideTheirDomain, StandardizationLut.TailMassIsTheEndRanks).
+// - Deviation [Wang20]: derivatives are the slopes of the piecewise-linear interpolants' segments, not of the
+//   continuous transform, so values and Jacobians stay consistent (test:
+//   StandardizationLut.SlopesAreFiniteDifferencesOfTheInterpolant).
 // - Phi^-1 is exact to double precision (Acklam's rational approximation refined by Halley steps on erfc),
 //   not a single-precision approximation (tests: StandardNormal.*).
 #pragma once

@@ -14,19 +14,16 @@
 namespace mbk {
 namespace {
 
-// max |G^-1(G(x)) - x| through the tables over the distinct example values (the same maximum as over all
-// texels), in parallel blocks, reduced serially in block order.
-double round_trip_error(const StandardizationChannelTables& t, std::span<const float> values) {
+// max over `count` points of error(i), in parallel blocks, reduced serially in block order (deterministic).
+template <typename Error>
+double max_error(size_t count, const Error& error) {
   constexpr int64_t kBlock = 4096;
-  const int64_t blocks = (int64_t(values.size()) + kBlock - 1) / kBlock;
+  const int64_t blocks = (int64_t(count) + kBlock - 1) / kBlock;
   std::vector<double> block_max(size_t(blocks), 0.0);
   parallel_for(0, blocks, [&](int64_t b) {
-    const size_t end = size_t(std::min<int64_t>(int64_t(values.size()), (b + 1) * kBlock));
+    const size_t end = size_t(std::min<int64_t>(int64_t(count), (b + 1) * kBlock));
     double worst = 0.0;
-    for (size_t i = size_t(b * kBlock); i < end; ++i) {
-      const double x = values[i];
-      worst = std::max(worst, std::abs(t.destandardize(t.standardize(x).value).value - x));
-    }
+    for (size_t i = size_t(b * kBlock); i < end; ++i) worst = std::max(worst, error(i));
     block_max[size_t(b)] = worst;
   });
   return block_max.empty() ? 0.0 : *std::max_element(block_max.begin(), block_max.end());
@@ -37,11 +34,21 @@ LutChannelStatistics channel_statistics(const EmpiricalStandardization& g, const
   s.min = g.min();
   s.max = g.max();
   s.distinct_values = g.distinct_values();
-  s.gaussian_min = t.z_lo;
-  s.gaussian_max = t.z_hi;
-  s.round_trip_error = round_trip_error(t, g.distinct());
+  s.knots = t.knots();
+  s.gaussian_min = t.z_lo();
+  s.gaussian_max = t.z_hi();
+  const std::span<const float> u = g.distinct(), z = t.z();
+  s.forward_error =
+      max_error(u.size(), [&](size_t i) { return std::abs(t.standardize(u[i]).value - g.forward(u[i])); });
+  s.round_trip_error = max_error(
+      u.size(), [&](size_t i) { return std::abs(t.destandardize(t.standardize(u[i]).value).value - double(u[i])); });
+  // Midpoints of the knot intervals in z (the interpolant's worst places), and the ends.
+  s.inverse_error = max_error(z.size(), [&](size_t i) {
+    const double q = i + 1 < z.size() ? 0.5 * (double(z[i]) + double(z[i + 1])) : double(z[i]);
+    return std::abs(t.destandardize(q).value - g.inverse(q));
+  });
   // Lower tail below z_lo plus upper tail above z_hi, each through its own side of Phi.
-  s.clipped_tail_mass = standard_normal_cdf(t.z_lo) + standard_normal_cdf(-double(t.z_hi));
+  s.clipped_tail_mass = standard_normal_cdf(t.z_lo()) + standard_normal_cdf(-double(t.z_hi()));
   return s;
 }
 
@@ -57,8 +64,11 @@ nlohmann::json LutChannelStatistics::to_json() const {
   return {{"min", min},
           {"max", max},
           {"distinct_values", distinct_values},
+          {"knots", knots},
           {"gaussian_min", gaussian_min},
           {"gaussian_max", gaussian_max},
+          {"forward_error", forward_error},
+          {"inverse_error", inverse_error},
           {"round_trip_error", round_trip_error},
           {"clipped_tail_mass", clipped_tail_mass}};
 }
@@ -95,39 +105,31 @@ AssetWriter lut_asset_writer(const BakedLut& lut, const InputRecord& input) {
   metadata["parameters"] = {{"size", size}};
   metadata["conventions"] = normal_map_conventions();
   metadata["conventions"]["channels"] =
-      "rows 0 and 1 of every section are n_x and n_y, the x and y components of the unit normal, standardized "
+      "knots_n_x and knots_n_y hold n_x and n_y, the x and y components of the unit normal, standardized "
       "separately";
   metadata["conventions"]["gaussian"] = "standard normal N(0, 1)";
   metadata["conventions"]["standardization"] =
       "mid-rank empirical CDF F_k = (c_1 + ... + c_{k-1} + c_k / 2) / N over the distinct values u_k with counts "
       "c_k, linear between them; G = Phi^-1(F), G^-1 its inverse, clamped to [min, max]";
-  metadata["conventions"]["domains"] =
-      "per channel (x_lo, x_hi, z_lo, z_hi): inverse tables sample G^-1 on [z_lo, z_hi] = [G(min), G(max)]; forward "
-      "tables sample, on [x_lo, x_hi] = [min, max], the exact inverse of the inverse table's interpolant (G within "
-      "one inverse step where G^-1 is resolved), so that a round trip is within one forward step";
+  metadata["conventions"]["knots"] =
+      "per channel, rows (x, z) with z = G(x) rounded to float, strictly increasing in both: G at a uniform grid of "
+      "size points over [min, max], at G^-1 of a uniform grid of size points over [G(min), G(max)], and at every "
+      "value shared by at least N / size texels";
   metadata["conventions"]["lookup"] =
-      "sample j of a table over [lo, hi] at lo + j (hi - lo) / (size - 1); linear between samples; clamped "
-      "outside [lo, hi] (derivative 0 there); slope j = (v_{j+1} - v_j) / ((hi - lo) / (size - 1)), the exact "
-      "derivative of the interpolant on [s_j, s_{j+1})";
+      "forward G_T: linear between knots read as (x, z), inverse G^-1_T: linear between knots read as (z, x), so "
+      "each is the other's inverse; derivative the segment's slope; clamped (derivative 0) outside the knots";
   nlohmann::json statistics;
   for (uint32_t c = 0; c < kLutChannels; ++c)
     statistics[std::string(kLutChannelNames[c])] = lut.statistics[c].to_json();
   metadata["statistics"] = statistics;
 
-  std::vector<float> domains, forward, forward_slope, inverse, inverse_slope;
-  for (const StandardizationChannelTables& t : lut.tables.channels) {
-    domains.insert(domains.end(), {t.x_lo, t.x_hi, t.z_lo, t.z_hi});
-    forward.insert(forward.end(), t.forward.begin(), t.forward.end());
-    forward_slope.insert(forward_slope.end(), t.forward_slope.begin(), t.forward_slope.end());
-    inverse.insert(inverse.end(), t.inverse.begin(), t.inverse.end());
-    inverse_slope.insert(inverse_slope.end(), t.inverse_slope.begin(), t.inverse_slope.end());
-  }
   AssetWriter writer("lut", std::move(metadata));
-  writer.add(std::string(kLutDomainsSection), {kLutChannels, kLutDomainValues}, domains);
-  writer.add(std::string(kLutForwardSection), {kLutChannels, size}, forward);
-  writer.add(std::string(kLutForwardSlopeSection), {kLutChannels, size - 1}, forward_slope);
-  writer.add(std::string(kLutInverseSection), {kLutChannels, size}, inverse);
-  writer.add(std::string(kLutInverseSlopeSection), {kLutChannels, size - 1}, inverse_slope);
+  for (uint32_t c = 0; c < kLutChannels; ++c) {
+    const StandardizationChannelTables& t = lut.tables.channels[c];
+    std::vector<float> rows(2 * t.knots());
+    for (size_t i = 0; i < t.knots(); ++i) rows[2 * i] = t.x()[i], rows[2 * i + 1] = t.z()[i];
+    writer.add(std::string(kLutKnotSections[c]), {t.knots(), kLutKnotColumns}, rows);
+  }
   return writer;
 }
 

@@ -18,9 +18,14 @@ namespace mbk {
 struct LutChannelStatistics {
   double min = 0.0, max = 0.0;                    // the channel's range in the example
   uint64_t distinct_values = 0;                   // distinct float values (ties share a mid-rank)
-  double gaussian_min = 0.0, gaussian_max = 0.0;  // the inverse table's range [z_lo, z_hi] = [G(min), G(max)]
-  // max |G^-1(G(x)) - x| over the example's values x, both through the stored tables (lut_lookup.h), in normal
-  // units: what sampling at `size` costs.
+  uint64_t knots = 0;                             // knots stored
+  double gaussian_min = 0.0, gaussian_max = 0.0;  // [z_lo, z_hi] = [G(min), G(max)]
+  // What the knots cost, against the exact transform (empirical_standardization.h):
+  // max |G_T(x) - G(x)| over the example's distinct values x (Gaussian units), what a blend sees at texel centres;
+  double forward_error = 0.0;
+  // max |G^-1_T(z) - G^-1(z)| over the midpoints of the knot intervals in z and z_lo, z_hi (normal units);
+  double inverse_error = 0.0;
+  // max |G^-1_T(G_T(x)) - x| over the example's distinct values x, both through the knots (normal units).
   double round_trip_error = 0.0;
   // N(0, 1) mass outside the inverse table's range [z_lo, z_hi]: where blended values clamp to min or max.
   double clipped_tail_mass = 0.0;

@@ -27,12 +27,20 @@ double element_footprint_integral(const PositionNormalElement& element, const Gl
   const Vec2 d = element.center - footprint.center;
   const Vec2 r = s - element.n;
   const Mat2& J = element.jacobian;
-  const Mat2 A = (ip + 1.0 / kSigmaH2) * Mat2::Identity() + ir * J.transpose() * J;
+  // A = c I + ir J^T J with c = ip + 1 / sigma_h^2, b = -ip d + ir J^T r. Its determinant and A^-1 b without
+  // cancellation, even when J is huge along one direction (next to an atom of the standardization, where G is
+  // steep: |J| ~ 1e11 made A00 A11 - A01^2 come out 0 or negative): for 2 x 2 matrices adj(A) = tr(A) I - A and
+  // adj(J^T J) = adj(J) adj(J)^T, so
+  //   det A = c^2 + c ir |J|_F^2 + ir^2 det(J)^2,     A^-1 b = (c b + ir adj(J) adj(J)^T b) / det A,
+  // sums of non-negative terms but for det(J) and the last product, whose entries are J's own.
+  const double c = ip + 1.0 / kSigmaH2;
   const Vec2 b = -ip * d + ir * J.transpose() * r;
   const double e = ip * d.squaredNorm() + ir * r.squaredNorm();
-  // A is symmetric positive definite: solve with the explicit 2x2 inverse.
-  const double det = A(0, 0) * A(1, 1) - A(0, 1) * A(1, 0);
-  const Vec2 a_inv_b = Vec2(A(1, 1) * b.x() - A(0, 1) * b.y(), A(0, 0) * b.y() - A(1, 0) * b.x()) / det;
+  const double det_j = J(0, 0) * J(1, 1) - J(0, 1) * J(1, 0);
+  const double det = c * c + c * ir * J.squaredNorm() + ir * ir * det_j * det_j;
+  Mat2 adj_j;
+  adj_j << J(1, 1), -J(0, 1), -J(1, 0), J(0, 0);
+  const Vec2 a_inv_b = (c * b + ir * (adj_j * (adj_j.transpose() * b))) / det;
   const double exponent = std::max(0.0, e - b.dot(a_inv_b));  // >= 0 in exact arithmetic
   return 2.0 * std::numbers::pi / std::sqrt(det) * std::exp(-0.5 * exponent);
 }

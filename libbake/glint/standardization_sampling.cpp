@@ -1,4 +1,4 @@
-// Sampling the standardization transform into tables (see standardization_sampling.h).
+// Knots of the standardization transform (see standardization_sampling.h).
 #include "libbake/glint/standardization_sampling.h"
 
 #include <algorithm>
@@ -7,71 +7,44 @@
 #include "formats/lut_layout.h"
 
 namespace mbk {
-namespace {
 
-// Samples f at the lookup positions of [lo, hi] (formats/lut_layout.h). Serial: even 65536 samples take only a
-// few milliseconds.
-template <typename F>
-std::vector<float> sample_table(double lo, double hi, uint32_t size, const F& f) {
-  std::vector<float> values(size);
-  for (uint32_t j = 0; j < size; ++j) values[j] = float(f(lut_sample_position(lo, hi, size, j)));
-  return values;
-}
-
-// Slope entry j of the stored table: the exact derivative of its interpolant on [s_j, s_{j+1}).
-std::vector<float> slopes_of(const std::vector<float>& values, double lo, double hi) {
-  const uint32_t size = uint32_t(values.size());
-  std::vector<float> slopes(size - 1);
-  for (uint32_t j = 0; j + 1 < size; ++j) slopes[j] = float(lut_interval_slope(lo, hi, size, values[j], values[j + 1]));
-  return slopes;
-}
-
-// The forward sample at x: the inverse of the inverse table's interpolant (lut_lookup.h) at x, as a Gaussian
-// value. The interpolant passes through (s_j, v_j); where it is flat at x (a run v_a = ... = v_b = x of equal
-// floats) the middle of the run is taken, as mid-ranks do for ties. Requires v_0 <= x <= v_{size-1}.
-double invert_interpolant(const std::vector<float>& v, double z_lo, double z_hi, double x) {
-  const uint32_t size = uint32_t(v.size());
-  const size_t a = size_t(std::lower_bound(v.begin(), v.end(), x, [](float e, double q) { return e < q; }) - v.begin());
-  const size_t b = size_t(std::upper_bound(v.begin(), v.end(), x, [](double q, float e) { return q < e; }) - v.begin());
-  double t;  // in sample units
-  if (a < b) {
-    t = 0.5 * (double(a) + double(b - 1));  // v_a .. v_{b-1} equal x
-  } else {
-    // v_{a-1} < x < v_a, with 1 <= a <= size - 1 because v_0 <= x <= v_{size-1}.
-    const size_t j = std::clamp<size_t>(a, 1, size - 1) - 1;
-    t = double(j) + (x - double(v[j])) / (double(v[j + 1]) - double(v[j]));
-  }
-  return z_lo + (z_hi - z_lo) * (t / double(size - 1));
-}
-
-}  // namespace
-
-StandardizationChannelTables sample_standardization(const EmpiricalStandardization& transform, uint32_t size) {
+StandardizationChannelTables sample_standardization(const EmpiricalStandardization& g, uint32_t size) {
   if (size < kLutMinSize || size > kLutMaxSize)
     throw Error(ExitCode::runtime_failure, "internal: lut size " + std::to_string(size) + " outside 2..65536");
-  StandardizationChannelTables t;
-  if (transform.max() - transform.min() < kFlatChannelSpread) {
-    t.x_lo = t.x_hi = float(transform.min());
-    t.z_lo = t.z_hi = 0.0f;
-    t.forward.assign(size, 0.0f);
-    t.inverse.assign(size, t.x_lo);
-    t.forward_slope.assign(size - 1, 0.0f);
-    t.inverse_slope.assign(size - 1, 0.0f);
-    return t;
+  if (g.max() - g.min() < kFlatChannelSpread) return StandardizationChannelTables({float(g.min())}, {0.0f});
+
+  // Candidate x: both grids and the atoms (min and max are float texel values, exact; so are the atoms).
+  std::vector<float> x;
+  x.reserve(3 * size_t(size));
+  for (uint32_t j = 0; j < size; ++j) {
+    x.push_back(float(lut_sample_position(g.min(), g.max(), size, j)));
+    x.push_back(float(g.inverse(lut_sample_position(g.gaussian_min(), g.gaussian_max(), size, j))));
   }
-  // min and max are float texel values: exact in float.
-  t.x_lo = float(transform.min());
-  t.x_hi = float(transform.max());
-  t.z_lo = float(transform.gaussian_min());
-  t.z_hi = float(transform.gaussian_max());
-  t.inverse = sample_table(t.z_lo, t.z_hi, size, [&](double z) { return transform.inverse(z); });
-  t.inverse.front() = t.x_lo, t.inverse.back() = t.x_hi;
-  t.forward =
-      sample_table(t.x_lo, t.x_hi, size, [&](double x) { return invert_interpolant(t.inverse, t.z_lo, t.z_hi, x); });
-  t.forward.front() = t.z_lo, t.forward.back() = t.z_hi;
-  t.forward_slope = slopes_of(t.forward, t.x_lo, t.x_hi);
-  t.inverse_slope = slopes_of(t.inverse, t.z_lo, t.z_hi);
-  return t;
+  // c_k >= N / size: the run holds about a z-grid step's worth of rank or more (so at most `size` atoms).
+  const uint64_t heavy = (uint64_t(g.count()) + size - 1) / size;
+  const std::vector<float> atoms = g.values_counted_at_least(std::max<uint64_t>(heavy, 1));  // ascending
+  x.insert(x.end(), atoms.begin(), atoms.end());
+  std::sort(x.begin(), x.end());
+  x.erase(std::unique(x.begin(), x.end()), x.end());
+  x.front() = float(g.min()), x.back() = float(g.max());  // the clamped ends
+
+  // Exact G at each knot, rounded to float; keep z strictly increasing. G is non-decreasing and so is float
+  // rounding, so a conflict is a knot whose z rounds onto its predecessor's: one of the two goes, and the one that
+  // stays is, in this order, a domain end, an atom, the earlier one.
+  std::vector<float> kx, kz;
+  std::vector<char> pinned;  // a domain end or an atom
+  kx.reserve(x.size());
+  kz.reserve(x.size());
+  for (size_t i = 0; i < x.size(); ++i) {
+    const float z = float(g.forward(x[i]));
+    const bool pin = i == 0 || i + 1 == x.size() || std::binary_search(atoms.begin(), atoms.end(), x[i]);
+    while (pin && kz.size() > 1 && kz.back() >= z && !pinned.back()) kx.pop_back(), kz.pop_back(), pinned.pop_back();
+    if (!kz.empty() && z <= kz.back()) continue;
+    kx.push_back(x[i]);
+    kz.push_back(z);
+    pinned.push_back(pin);
+  }
+  return StandardizationChannelTables(std::move(kx), std::move(kz));
 }
 
 }  // namespace mbk

@@ -1,44 +1,38 @@
-// Sampling the standardization transform of one channel (empirical_standardization.h) into the float tables of
-// asset kind `lut` (formats/lut_layout.h): the inverse table G^-1 on [z_lo, z_hi] = [G(min), G(max)] and the
-// forward table on [x_lo, x_hi] = [min, max], `size` samples each ([Wang20] uses 128; microbake defaults to
-// 4096), and their slope tables, computed from the stored float samples so that they are the exact derivatives of
-// the interpolants a lookup sees (lut_lookup.h).
+// Knots of the standardization transform of one channel (empirical_standardization.h) as asset kind `lut` stores
+// them (formats/lut_layout.h): the exact G at the union of
+//   - the uniform x grid of `size` points over [x_lo, x_hi] = [min, max],
+//   - the points x = G^-1(z) of the uniform z grid of `size` points over [z_lo, z_hi] = [G(min), G(max)],
+//   - every heavy value, one shared by at least N / size texels (an atom of the distribution),
+// rounded to float, sorted, with repeated x or z dropped (keeping the ends and atoms). Forward G_T and inverse
+// G^-1_T interpolate the same knots
+// (lut_lookup.h), so they are exact inverses: G^-1_T(G_T(x)) = x up to double rounding, for every x.
 //
-// The two tables are made consistent with each other, because what blending needs is that a single patch comes
-// back unchanged: G^-1_T(G_T(x)) = x, T marking the tables.
-// - The inverse table samples the exact G^-1 at its sample positions (evaluated in double from the float domain
-//   ends, rounded to float).
-// - The forward table samples the exact inverse of the inverse table's interpolant, G_T(x_i) = (G^-1_T)^-1(x_i)
-//   (where that interpolant is flat at x_i, the middle of the flat run, as mid-ranks do for ties). Then for any
-//   x in [x_i, x_{i+1}], G_T(x) lies between G_T(x_i) and G_T(x_{i+1}), and the monotone G^-1_T maps it back
-//   between x_i and x_{i+1}:
+// Why both grids and the atoms ([Wang20] samples G and G^-1 uniformly, 128 each; microbake 0.1 did too, 4096):
+// where many texels share one value x0 (the flat ground of `scratches`: ~93% of texels), G rises from
+// Phi^-1(0.03) to Phi^-1(0.97) within the few ulps between x0 and its neighbours, and a forward table sampled
+// uniformly in x interpolates across that rise: G_T(x0) came out +0.61, +1.29 or -1.08 depending on the table size,
+// where G(x0) = 0.0004, so every blend around a flat texel left the plateau. Here x0 is a knot, exact; the z grid
+// puts knots on the steep rise; the x grid on the sparse stretches. Between consecutive knots, G and G_T are
+// monotone and agree at both ends, so
 //
-//       +---------------------------------------------------------------------------------+
-//       |  |G^-1_T(G_T(x)) - x| <= h_x = (max - min) / (size - 1)   (+ float rounding)     |
-//       +---------------------------------------------------------------------------------+
+//       +-----------------------------------------------------------------------------------------------+
+//       |  |G_T(x) - G(x)| <= the knot interval's z step,   |G^-1_T(z) - G^-1(z)| <= its x step,          |
+//       |  each at most one grid step (z_hi - z_lo) / (size - 1), (x_hi - x_lo) / (size - 1), up to float   |
+//       |  rounding of the knots; G_T = G (to float) at every atom.                                         |
+//       +-----------------------------------------------------------------------------------------------+
 //
-//   for every x, whatever the distribution: at most 4.9e-4 in normal units at the default size (a channel spans
-//   at most [-1, 1]), 1.6e-2 at 128 (tests: StandardizationLut.RoundTripWithinOneForwardStep*).
-//   Deviation [Heitz18], [Wang20]: sampling G itself instead leaves the round trip at the mercy of the inverse
-//   table's interpolation where G^-1 jumps between sparse example values within one table step: 1.8e-3 on
-//   `flakes` at 4096 samples. G_T stays within one inverse step of G wherever G^-1 is resolved; near an atom
-//   (many texels of one value, e.g. the flat ground of `scratches`) G is nearly vertical and no uniform x
-//   sampling can follow it, with either construction.
-// - Both tables are non-decreasing (float rounding is monotone), and their end samples are pinned to the other
-//   table's domain ends (forward: z_lo, z_hi; inverse: x_lo, x_hi): G^-1(G(min)) = min exactly, whereas evaluating
-//   G^-1 at the float-rounded z_lo could land an ulp beside min.
-// - Outside [z_lo, z_hi] the exact G^-1 is the clamped end value, so the inverse table loses nothing by its range;
-//   the Gaussian mass clamped there is the channel's clipped tail mass.
-// - A channel whose values all lie within kFlatChannelSpread of each other is stored as the constant min (G = 0,
-//   G^-1 = min, zero slopes), exactly like a constant channel: its slope dG/dx would otherwise exceed the float
-//   range (a spread of 1e-40 with 4096 samples gives slopes ~1e44), and the error made, below 1e-20 in normal
-//   units, is far under anything a float can show (test: StandardizationLut.NearlyConstantChannelStaysFinite).
+// The one exception is float resolution itself: where G rises by more than a z step between two adjacent floats
+// (next to an atom of a large map), no float knot can sit in between, and that interval is one segment.
+//
+// A channel whose values all lie within kFlatChannelSpread of each other is stored as one knot (min, 0), exactly
+// like a constant channel (G = 0, G^-1 = min): slopes across a spread of 1e-40 would exceed the float range, and
+// the error made, below 1e-20 in normal units, is far under anything a float can show.
 #pragma once
 
 #include <cstdint>
 
-#include "libbake/glint/empirical_standardization.h"
 #include "formats/standardization_lut.h"
+#include "libbake/glint/empirical_standardization.h"
 
 namespace mbk {
 

@@ -2,13 +2,18 @@
 // example's lut and rmq assets with canonical options, refuses bad options naming them, and on a constant map
 // (where the P-NDF over any footprint equals the exact point NDF, tests/glint/glint_pndf_test.cpp) the filtered
 // render agrees with the brute-force reference, which reads no assets; on a bumpy map the two reflect the same
-// light overall.
+// light overall; the reference standardizes with the asset's own knots.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
+#include "formats/asset.h"
 #include "formats/error.h"
+#include "formats/standardization_lut.h"
+#include "libbake/glint/lut_asset.h"
 #include "libbake/eval/image_difference.h"
 #include "libbake/eval/renderer.h"
 #include "libbake/scene/bake_plan.h"
@@ -88,6 +93,37 @@ TEST(GlintsEffect, BumpyMapReflectsTheSameLightAsTheReference) {
   bake_scene(scene);
   const double filtered = mean(render(scene, 4, 0)), reference = mean(render(scene, 1, 8));
   EXPECT_NEAR(filtered, reference, 0.05 * reference) << filtered << " vs " << reference;
+}
+
+TEST(GlintsEffect, ReferenceUsesTheAssetsKnots) {
+  // The reference standardizes the raw map itself, with the baker's function at the material's lut_size: the
+  // knots must be the asset's, bit for bit (microbake 0.1's reference used 65536 samples whatever the asset had),
+  // and so the reference picture must depend on lut_size.
+  ScratchDir dir("glints_reference_knots");
+  testing::write_normal_map(dir / "atom.exr", 64, 64, [](uint32_t x, uint32_t row) {
+    return (x * 7 + row * 3) % 10 == 0 ? Vec3(0.4 * std::sin(0.3 * x), 0.3 * std::cos(0.2 * row), 1.0) : Vec3(0, 0, 1);
+  });
+  Image references[2];
+  for (int i = 0; i < 2; ++i) {
+    const uint32_t lut_size = i == 0 ? 2 : 4096;
+    testing::write_json(
+        dir / "s.json",
+        scene_with({{"name", "glints"}, {"sigma_r", 0.05}, {"patch", 32}, {"lut_size", lut_size}}, "atom.exr"));
+    const Scene scene = load_scene(dir / "s.json");
+    bake_scene(scene);
+    const PlannedAsset lut_asset = plan_assets(scene).at(0);
+    ASSERT_EQ(lut_asset.recipe.kind, "lut");
+    const StandardizationLut baked =
+        read_standardization_lut(Asset::open(default_asset_folder(scene) / lut_asset.file_name));
+    const LoadedNormalMap map = load_normal_map(dir / "atom.exr", {});
+    const StandardizationLut own = bake_standardization_lut(map.map, lut_size, Progress::silent()).tables;
+    for (int c = 0; c < 2; ++c) {
+      EXPECT_TRUE(std::ranges::equal(baked.channels[c].x(), own.channels[c].x())) << lut_size;
+      EXPECT_TRUE(std::ranges::equal(baked.channels[c].z(), own.channels[c].z())) << lut_size;
+    }
+    references[i] = render(scene, 1, 2);
+  }
+  EXPECT_GT(compare_images(references[0], references[1]).max_abs, 0.0);
 }
 
 }  // namespace

@@ -35,6 +35,22 @@ TEST(ImageDifference, MetricsMatchTheirDefinitions) {
   EXPECT_TRUE(std::isinf(same.psnr_db));
 }
 
+TEST(ImageDifference, BlockL1IsTheRelativeL1OfBlockMeans) {
+  // 5 x 3 pixels, one channel, 2 x 2 blocks: blocks of 4, 4, 2 (top) and 2, 2, 1 (bottom) pixels.
+  const Image reference = constant_image(5, 3, 1, 1.0f);
+  Image a = reference;
+  a.pixels[0] = 3.0f;   // +2 in block (0, 0) ...
+  a.pixels[1] = -1.0f;  // ... and -2: its mean is 1 again
+  a.pixels[14] = 2.0f;  // block (2, 1), one pixel: off by 1 (of 6 block means of 1)
+  EXPECT_DOUBLE_EQ(compare_images(a, reference, 2).block_relative_l1, 1.0 / 6.0);
+  a.pixels[1] = 1.0f;  // now block (0, 0) is off by 2 / 4
+  EXPECT_DOUBLE_EQ(compare_images(a, reference, 2).block_relative_l1, 1.5 / 6.0);
+  EXPECT_DOUBLE_EQ(compare_images(a, reference, 1).block_relative_l1, 3.0 / 15.0);  // plain relative L1
+  const Image black = constant_image(5, 3, 1, 0.0f);
+  EXPECT_EQ(compare_images(black, black).block_relative_l1, 0.0);
+  EXPECT_TRUE(std::isinf(compare_images(reference, black).block_relative_l1));
+}
+
 TEST(ImageDifference, SizeOrChannelMismatchAndNonFiniteValuesAreInvalidInput) {
   const Image a = constant_image(4, 3, 3, 0.5f);
   for (const Image& b : {constant_image(3, 4, 3, 0.5f), constant_image(4, 3, 4, 0.5f)}) {

@@ -311,14 +311,11 @@ std::vector<CorruptCase> corrupt_cases() {
       {"MipHeightAString", 11006, [] { return test::mip_writer(5, 3, 0, "height", "3").serialize(); }},
       {"MipLevelsMissing", 11006, [&] { return test::without_parameter(valid(), "levels"); }},
       {"MipLevelsDisagree", 11006, [] { return test::mip_writer(5, 3, 0, "levels", 2).serialize(); }},
-      {"LutNonFinite", 12001, [] { return test::lut_with_value(2, 1, std::nanf("")); }},
-      {"LutSizeOutOfRange", 12002, [] { return test::lut_with_size(1); }},
-      {"LutShapeDisagreesWithSize", 12003, [] { return test::lut_with_size(6); }},
-      {"LutDomainReversed", 12004, [] { return test::lut_with_value(0, 0, 0.6f); }},  // n_x x_lo above x_hi
-      {"LutInverseDecreases", 12005, [] { return test::lut_with_value(3, 2, -0.3f); }},
-      {"LutNegativeSlope", 12006, [] { return test::lut_with_value(2, 1, -1.0f); }},
-      {"LutSlopeNotTheInterpolants", 12007, [] { return test::lut_with_value(2, 2, 3.03f); }},  // exact: 3
-      {"LutForwardStartsBelowZLo", 12008, [] { return test::lut_with_value(1, 0, -1.6f); }},
+      {"LutNonFinite", 20001, [] { return test::lut_with_value(0, 3, std::nanf("")); }},
+      {"LutSizeOutOfRange", 20002, [] { return test::lut_with_size(1); }},
+      {"LutShapeNotKnotRows", 20003, [] { return test::valid_lut_bytes(3); }},
+      {"LutConstantChannelNotAtZero", 20004, [] { return test::lut_with_value(1, 1, 0.5f); }},
+      {"LutKnotsNotIncreasing", 20005, [] { return test::lut_with_value(0, 4, -0.3f); }},  // x below knot 1's
       {"RmqBadParameters", 13001, [] { return test::rmq_with_parameter("patch", 3); }},
       {"RmqTableShape", 13002, [] { return test::rmq_with_parameter("bits", 8); }},  // the table is u16
       {"RmqRangeLoAboveHi", 13003, [] { return test::rmq_with_range_value(0, 1.0); }},

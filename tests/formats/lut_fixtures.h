@@ -1,7 +1,6 @@
-// Test fixtures for the `lut` kind: a small valid asset built by hand from the lookup convention of
-// formats/SPEC.md "Kind 2: lut" (independently of the bake): channel n_x a non-linear monotone pair of 5-sample
-// tables, channel n_y a constant channel; and readable corruptions of it, one per lut finding
-// (tests/formats/corrupt_fixtures_test.cpp).
+// Test fixtures for the `lut` kind: a small valid asset built by hand from formats/SPEC.md "Kind 10: lut"
+// (independently of the bake): channel n_x five knots of a non-linear monotone map, channel n_y a one-knot
+// (constant) channel; and readable corruptions of it, one per lut finding (tests/formats/corrupt_fixtures_test.cpp).
 #pragma once
 
 #include <cstdint>
@@ -17,35 +16,23 @@ namespace mbk::test {
 
 inline constexpr uint32_t kLutFixtureSize = 5;
 
-// Sections in writing order: domains (0), forward (1), forward_slope (2), inverse (3), inverse_slope (4).
-inline std::vector<uint8_t> valid_lut_bytes() {
-  constexpr uint32_t M = kLutFixtureSize;
-  // n_x: forward on [-0.5, 0.5] runs from z_lo = -1.5 to z_hi = 1.5; inverse on [-1.5, 1.5] from -0.5 to 0.5.
-  // n_y: constant 0.25: empty domains, G = 0, G^-1 = 0.25.
-  const std::vector<float> domains = {-0.5f, 0.5f, -1.5f, 1.5f, 0.25f, 0.25f, 0.0f, 0.0f};
-  const std::vector<float> forward = {-1.5f, -0.5f, 0.0f, 0.75f, 1.5f, 0, 0, 0, 0, 0};
-  const std::vector<float> inverse = {-0.5f, -0.2f, 0.0f, 0.1f, 0.5f, 0.25f, 0.25f, 0.25f, 0.25f, 0.25f};
-  // Slope j = (v_{j+1} - v_j) / ((hi - lo) / (M - 1)); 0 for an empty domain.
-  auto slopes = [](const std::vector<float>& v, double lo, double hi) {
-    std::vector<float> s;
-    for (uint32_t j = 0; j + 1 < M; ++j) s.push_back(float((double(v[j + 1]) - double(v[j])) / ((hi - lo) / (M - 1))));
-    for (uint32_t j = 0; j + 1 < M; ++j) s.push_back(0.0f);
-    return s;
-  };
+// Sections in writing order: knots_n_x (0), knots_n_y (1). `ny_columns` other than 2 breaks n_y's shape.
+inline std::vector<uint8_t> valid_lut_bytes(uint64_t ny_columns = 2) {
+  // n_x: (x, z) rows; n_y: constant 0.25, G = 0.
+  const std::vector<float> nx = {-0.5f, -1.5f, -0.2f, -0.5f, 0.0f, 0.0f, 0.1f, 0.75f, 0.5f, 1.5f};
+  std::vector<float> ny = {0.25f, 0.0f};
+  ny.resize(ny_columns, 0.0f);
   nlohmann::json meta = {{"inputs", nlohmann::json::array()},
-                         {"parameters", {{"size", M}}},
+                         {"parameters", {{"size", kLutFixtureSize}}},
                          {"conventions", {{"normal_convention", "+Y"}}},
                          {"statistics", nlohmann::json::object()}};
   AssetWriter w("lut", meta);
-  w.add<float>("domains", {2, 4}, domains);
-  w.add<float>("forward", {2, M}, forward);
-  w.add<float>("forward_slope", {2, M - 1}, slopes(forward, -0.5, 0.5));
-  w.add<float>("inverse", {2, M}, inverse);
-  w.add<float>("inverse_slope", {2, M - 1}, slopes(inverse, -1.5, 1.5));
+  w.add<float>("knots_n_x", {5, 2}, nx);
+  w.add<float>("knots_n_y", {1, ny_columns}, ny);
   return w.serialize();
 }
 
-// The valid fixture with element `index` of section `section` (0..4, order above) set to `value`, resealed.
+// The valid fixture with element `index` of section `section` (0..1, order above) set to `value`, resealed.
 inline std::vector<uint8_t> lut_with_value(size_t section, size_t index, float value) {
   std::vector<uint8_t> f = valid_lut_bytes();
   store_le<float>(&f[section_data_offset(f, section) + 4 * index], value);

@@ -1,9 +1,7 @@
-// `validate` on kind 2, `lut` (formats/kind_lut.cpp): the hand-built fixture (tests/formats/lut_fixtures.h) is
-// valid, and the slope check tolerates exactly float rounding: a stored slope one ulp off the exact slope passes,
-// a few ulps off is reported (12007). One corrupt fixture per finding is in corrupt_fixtures_test.cpp.
+// `validate` on kind 10, `lut` (formats/kind_lut.cpp): the hand-built fixture (tests/formats/lut_fixtures.h) is
+// valid; knots must rise strictly in x and in z (a repeated x or z is reported, 20005); the retired kind 2 is
+// refused with a note to rebake. One corrupt fixture per finding is in corrupt_fixtures_test.cpp.
 #include <gtest/gtest.h>
-
-#include <cmath>
 
 #include "formats/validate.h"
 #include "tests/formats/lut_fixtures.h"
@@ -19,13 +17,20 @@ std::vector<int> error_ids(const std::vector<uint8_t>& bytes) {
 
 TEST(LutKind, HandBuiltFixtureHasNoFindings) { EXPECT_TRUE(error_ids(test::valid_lut_bytes()).empty()); }
 
-TEST(LutKind, SlopeCheckToleratesFloatRoundingOnly) {
-  // forward_slope entry 2 of n_x is exactly 3 (samples 0 and 0.75, step 0.25).
-  EXPECT_TRUE(error_ids(test::lut_with_value(2, 2, std::nextafter(3.0f, 4.0f))).empty());
-  EXPECT_TRUE(error_ids(test::lut_with_value(2, 2, std::nextafter(3.0f, 2.0f))).empty());
-  float off = 3.0f;
-  for (int ulp = 0; ulp < 4; ++ulp) off = std::nextafter(off, 4.0f);
-  EXPECT_EQ(error_ids(test::lut_with_value(2, 2, off)), std::vector<int>{12007});
+TEST(LutKind, RepeatedKeysAreRefusedInBothAxes) {
+  EXPECT_EQ(error_ids(test::lut_with_value(0, 4, -0.2f)), std::vector<int>{20005});  // x of knot 2 = knot 1's
+  EXPECT_EQ(error_ids(test::lut_with_value(0, 5, -0.5f)), std::vector<int>{20005});  // z of knot 2 = knot 1's
+  EXPECT_TRUE(error_ids(test::lut_with_value(0, 5, -0.4999f)).empty());
+}
+
+TEST(LutKind, RetiredKind2IsRefusedWithANoteToRebake) {
+  std::vector<uint8_t> f = test::valid_lut_bytes();
+  store_le<uint32_t>(&f[12], 2);
+  test::reseal_header(f);
+  const std::vector<Finding> findings = validate_asset(f);
+  ASSERT_FALSE(findings.empty());
+  EXPECT_EQ(findings.front().id, 2011);
+  EXPECT_NE(findings.front().message.find("rebake"), std::string::npos) << findings.front().message;
 }
 
 }  // namespace

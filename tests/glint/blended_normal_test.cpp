@@ -5,6 +5,7 @@
 // variance- and histogram-preserving blends keeping the example's mean (and, for histogram, its spread).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <random>
@@ -33,10 +34,12 @@ const Fixture& fixture() {
   return f;
 }
 
-// LUT interval of x in a table (unclamped, so leaving the domain also counts as a change of piece).
-int64_t lut_interval(const LutTableView& t, double x) {
-  if (t.hi == t.lo) return x < t.lo ? -1 : (x > t.hi ? 1 : 0);
-  return int64_t(std::floor((x - t.lo) / (t.hi - t.lo) * double(t.values.size() - 1)));
+// Knot interval of x among `keys` (unclamped: below the first knot -1, past the last M - 1, so leaving the
+// domain also counts as a change of piece).
+int64_t lut_interval(std::span<const float> keys, double x) {
+  return int64_t(std::upper_bound(keys.begin(), keys.end(), x, [](double q, float k) { return q < k; }) -
+                 keys.begin()) -
+         1;
 }
 
 // Everything that selects the smooth piece n is evaluated on at u: the target patch (and for `none` the
@@ -53,26 +56,26 @@ std::vector<int64_t> piece_signature(const GlintPointQuery& q, const Standardiza
     const NormalSample s = sample_example_bilinear(fixture().example, c.example_point);
     w2 += c.weight * c.weight;
     for (int ch = 0; ch < 2; ++ch) {
-      sig.push_back(lut_interval(lut.channels[ch].forward_table(), s.n[ch]));
+      sig.push_back(lut_interval(lut.channels[ch].x(), s.n[ch]));
       z[ch] += c.weight * lut.channels[ch].standardize(s.n[ch]).value;
     }
   }
-  for (int ch = 0; ch < 2; ++ch) sig.push_back(lut_interval(lut.channels[ch].inverse_table(), z[ch] / std::sqrt(w2)));
+  for (int ch = 0; ch < 2; ++ch) sig.push_back(lut_interval(lut.channels[ch].z(), z[ch] / std::sqrt(w2)));
   return sig;
 }
 
-// FD step 1e-4 texels: the pieces are polynomials in u (bilinear example times bilinear weights), composed
-// with 1/W (smooth, W >= 1/2) and piecewise-linear LUTs, so within one piece the central difference is off
-// by h^2/6 |n'''| ~ 1e-9 relative, and rounding adds ~eps |n| / h ~ 1e-12: six orders below the 1e-3 bar.
-// "Away from kinks": a point is used only when all four stencil points u +/- h e_0, u +/- h e_1 lie on u's
-// piece (same signature). Along an axis-aligned segment the texel and patch lines are crossed at most once
-// and the example values I_k are linear, so equal signatures at both ends mean no kink in between (Z is
-// smooth; returning to the same LUT interval within 2e-4 texels is the only, negligible, exception). Every mode
-// uses the same signature, LUT intervals included, so all skip the same ~40% of points, mostly for crossing
-// one of the 4096-sample LUT intervals (conservative for the modes without LUTs).
+// FD step 1e-5 texels (knots cluster where the example's values do, so a wider stencil crosses one too often): the
+// pieces are polynomials in u (bilinear example times bilinear weights), composed with 1/W (smooth, W >= 1/2) and
+// piecewise-linear knot tables, so within one piece the central difference is off by h^2/6 |n'''| ~ 1e-11 relative, and
+// rounding adds ~eps |n| / h ~ 1e-11: six orders below the 1e-3 bar. "Away from kinks": a point is used only when all
+// four stencil points u +/- h e_0, u +/- h e_1 lie on u's piece (same signature). Along an axis-aligned segment the
+// texel and patch lines are crossed at most once and the example values I_k are linear, so equal signatures at both
+// ends mean no kink in between (Z is smooth; returning to the same knot interval within 2e-5 texels is the only,
+// negligible, exception). Every mode uses the same signature, knot intervals included, so all skip the same points,
+// mostly for crossing a knot (conservative for the modes without knots).
 TEST(GlintPointQuery, JacobianMatchesCentralDifferencesAwayFromKinks_AllModes) {
   const Fixture& f = fixture();
-  constexpr double kStep = 1e-4;
+  constexpr double kStep = 1e-5;
   for (const GlintBlendMode mode : kModes) {
     const GlintPointQuery q(f.example, 32, 17, mode, &f.lut.tables);
     std::mt19937_64 rng(21);

