@@ -63,9 +63,7 @@ std::string kind_name(const ::testing::TestParamInfo<GeneratorKind>& info) { ret
 TEST_P(ConventionOfGeneratedKinds, AutoTellsTheMapFromItsGreenFlippedCopy) {
   const GeneratorKind& kind = GetParam();
   test::ScratchDir dir;
-  const struct {
-    uint32_t w, h, seed;
-  } cases[] = {{512, 512, 1}, {128, 80, 2}, {64, 64, 3}};
+  const struct { uint32_t w, h, seed; } cases[] = {{512, 512, 1}, {128, 80, 2}, {64, 64, 3}};
   for (const auto& c : cases) {
     const NormalMap m = gen(kind.name, c.w, c.h, c.seed);
     save_normal_map(dir / "plus.png", m);
@@ -73,10 +71,12 @@ TEST_P(ConventionOfGeneratedKinds, AutoTellsTheMapFromItsGreenFlippedCopy) {
     test::WarningCapture warnings;
     const LoadedNormalMap plus = load_normal_map(dir / "plus.png", {});
     const LoadedNormalMap minus = load_normal_map(dir / "minus.png", {});
-    const double s_plus = plus.record.convention_evidence["statistic"], s_minus = minus.record.convention_evidence["statistic"];
+    const double s_plus = plus.record.convention_evidence["statistic"],
+                 s_minus = minus.record.convention_evidence["statistic"];
     std::cout << "[convention] " << kind.name << " " << c.w << "x" << c.h << " seed " << c.seed << ": statistic "
-              << s_plus << ", green-flipped " << s_minus << ", n_eff " << plus.record.convention_evidence["effective_stencils"]
-              << ", needed " << plus.record.convention_evidence["required_confidence"] << "\n";
+              << s_plus << ", green-flipped " << s_minus << ", n_eff "
+              << plus.record.convention_evidence["effective_stencils"] << ", needed "
+              << plus.record.convention_evidence["required_confidence"] << "\n";
     EXPECT_EQ(plus.record.convention_requested, "auto");
     if (kind.from_height) {
       EXPECT_EQ(plus.record.convention, "+Y") << c.w;
@@ -120,7 +120,7 @@ TEST(ConventionDetection, StatisticIsScaleFreeAndIgnoresNormalLengths) {
   for (size_t i = 0; i < m.texels.size(); ++i) {
     const Vec3f& n = m.texels[i];
     steeper.texels[i] = Vec3f(3 * n.x(), 3 * n.y(), n.z()).normalized();  // every slope times 3
-    shorter.texels[i] = n * (0.5f + 0.5f * float(i % 7) / 6.0f);           // lengths 0.5 .. 1
+    shorter.texels[i] = n * (0.5f + 0.5f * float(i % 7) / 6.0f);          // lengths 0.5 .. 1
   }
   EXPECT_NEAR(measure_convention(steeper).statistic, e.statistic, 1e-5);
   EXPECT_NEAR(measure_convention(shorter).statistic, e.statistic, 1e-6);
@@ -234,8 +234,8 @@ TEST(ConventionLoad, AutoReadsAMinusYFileAsMinusYWithoutWarning) {
   EXPECT_TRUE(warnings.lines().empty());
   const nlohmann::json j = a.record.to_json();
   for (const char* key : {"convention", "convention_requested", "convention_evidence"}) EXPECT_TRUE(j.contains(key));
-  for (const char* key : {"statistic", "confidence", "required_confidence", "effective_stencils", "stencils", "verdict",
-                          "decision"})
+  for (const char* key :
+       {"statistic", "confidence", "required_confidence", "effective_stencils", "stencils", "verdict", "decision"})
     EXPECT_TRUE(j["convention_evidence"].contains(key)) << key;
 }
 
@@ -247,8 +247,8 @@ TEST(ConventionLoad, UndecidableAutoWarnsOnceAndReadsPlusY) {
   EXPECT_EQ(a.record.convention, "+Y");
   ASSERT_EQ(warnings.lines().size(), 1u);
   const std::string& w = warnings.lines()[0];
-  for (const char* part : {"cannot tell the normal map's green-channel convention (curl statistic ", "needed): read as +Y",
-                           "--convention +Y|-Y", "flakes.png)"})
+  for (const char* part : {"cannot tell the normal map's green-channel convention (curl statistic ",
+                           "needed): read as +Y", "--convention +Y|-Y", "flakes.png)"})
     EXPECT_NE(w.find(part), std::string::npos) << part << " not in: " << w;
   // Named explicitly, it is not warned about.
   warnings.clear();
@@ -265,8 +265,9 @@ TEST(ConventionLoad, ExplicitConventionAgainstAConfidentStatisticWarns) {
   EXPECT_EQ(m.record.convention, "-Y");  // as asked
   EXPECT_EQ(m.record.convention_evidence["decision"], "as requested, against the statistic");
   ASSERT_EQ(warnings.lines().size(), 1u);
-  EXPECT_NE(warnings.lines()[0].find("the normal map is read as -Y as requested, but its slopes say +Y (curl statistic +"),
-            std::string::npos)
+  EXPECT_NE(
+      warnings.lines()[0].find("the normal map is read as -Y as requested, but its slopes say +Y (curl statistic +"),
+      std::string::npos)
       << warnings.lines()[0];
   warnings.clear();
   load_normal_map(dir / "gl.png", {YConvention::plus_y, InvalidTexelPolicy::error});

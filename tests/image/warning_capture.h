@@ -12,8 +12,9 @@ namespace mbk::test {
 class WarningCapture {
  public:
   WarningCapture()
-      : previous_(set_warning_handler(
-            [this](const std::string& what, const std::string& where) { lines_.push_back(what + " (" + where + ")"); })) {}
+      : previous_(set_warning_handler([this](const std::string& what, const std::string& where) {
+          lines_.push_back(what + " (" + where + ")");
+        })) {}
   ~WarningCapture() { set_warning_handler(previous_); }
   WarningCapture(const WarningCapture&) = delete;
   WarningCapture& operator=(const WarningCapture&) = delete;
