@@ -19,6 +19,24 @@ std::string shape_text(const std::vector<uint64_t>& shape) {
   return s + "]";
 }
 
+// "convention: -Y, detected (requested auto; curl statistic -0.956, confidence 0.956, 0.250 needed)" for a
+// normal-map input (convention_requested and convention_evidence, libbake/image/normal_map.h), else "".
+std::string convention_line(const nlohmann::json& in) {
+  if (!in.is_object() || !in.contains("convention_evidence") || !in["convention_evidence"].is_object()) return "";
+  const nlohmann::json& e = in["convention_evidence"];
+  auto number = [&](const char* key, const char* format) {
+    char text[32] = "?";
+    if (e.contains(key) && e[key].is_number()) std::snprintf(text, sizeof text, format, e[key].get<double>());
+    return std::string(text);
+  };
+  auto text = [](const nlohmann::json& j, const char* key) {
+    return j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : std::string("?");
+  };
+  return "convention: " + text(in, "convention") + ", " + text(e, "decision") + " (requested " +
+         text(in, "convention_requested") + "; curl statistic " + number("statistic", "%+.3f") + ", confidence " +
+         number("confidence", "%.3f") + ", " + number("required_confidence", "%.3f") + " needed)";
+}
+
 class InfoCommand : public Command {
  public:
   void add_options(CLI::App& app) override {
@@ -67,7 +85,10 @@ class InfoCommand : public Command {
                 << "producer:    " << m["producer"].value("name", "?") << " " << m["producer"].value("version", "?")
                 << "\n";
       std::cout << "inputs:\n";
-      for (const auto& in : m["inputs"]) std::cout << "  " << in.dump() << "\n";
+      for (const auto& in : m["inputs"]) {
+        std::cout << "  " << in.dump() << "\n";
+        if (const std::string line = convention_line(in); !line.empty()) std::cout << "    " << line << "\n";
+      }
       for (const char* block : {"parameters", "conventions", "statistics"}) {
         std::cout << block << ":\n";
         if (m[block].is_object())

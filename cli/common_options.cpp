@@ -1,10 +1,15 @@
 // Shared options (see common_options.h).
 #include "cli/common_options.h"
 
+#include <cstdio>
+#include <memory>
+#include <set>
+
 #include "formats/atomic_file.h"
 #include "formats/error.h"
 #include "formats/file_extension.h"
 #include "libbake/core/parallel.h"
+#include "libbake/core/warnings.h"
 
 namespace mbk::cli {
 
@@ -14,7 +19,19 @@ ProgressMode RunOptions::progress_mode() const {
   return ProgressMode::automatic;
 }
 
-void RunOptions::apply() const { set_thread_count(threads); }
+void RunOptions::apply() const {
+  set_thread_count(threads);
+  if (quiet) {
+    set_warning_handler({});
+    return;
+  }
+  // A scene may read one map for several assets: its warning is printed once.
+  set_warning_handler(
+      [printed = std::make_shared<std::set<std::string>>()](const std::string& what, const std::string& where) {
+        const std::string line = "microbake: warning: " + what + " (" + where + ")\n";
+        if (printed->insert(line).second) std::fputs(line.c_str(), stderr);
+      });
+}
 
 void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--threads", o.threads, "Worker threads (0 = all cores); outputs do not depend on it")
@@ -58,7 +75,7 @@ void add_output_option(CLI::App& app, OutputOption& output, const std::string& w
 
 NormalMapLoadOptions NormalMapInput::load_options() const {
   NormalMapLoadOptions o;
-  o.convention = parse_convention(convention);
+  o.convention = parse_convention_request(convention);
   o.invalid = repair_invalid ? InvalidTexelPolicy::repair : InvalidTexelPolicy::error;
   return o;
 }
@@ -67,8 +84,10 @@ void add_normal_map_input(CLI::App& app, NormalMapInput& input) {
   app.add_option("input", input.path, "Normal map (any image OpenImageIO reads: PNG, EXR, TGA, JPEG, TIFF)")
       ->required();
   app.add_option("--convention", input.convention,
-                 "Green channel convention of the input: +Y (OpenGL) or -Y (DirectX); any case")
-      ->default_val("+Y");
+                 "Green channel convention of the input: auto (told from the curl of its slopes; read as +Y with a "
+                 "warning when it cannot tell), +Y (OpenGL) or -Y (DirectX, warned about when the slopes say +Y); "
+                 "any case")
+      ->default_val("auto");
   app.add_flag(
       "--repair-invalid", input.repair_invalid,
       "Repair invalid texels instead of failing: NaN/Inf/zero -> (0,0,1), z < 0 -> z = 0 (recorded in metadata)");

@@ -1,6 +1,7 @@
 // Options written once and reused by every command, with the same names and wording everywhere:
 // run options (--threads, --quiet, --progress), --format text|json, -o/--output (whose temporary-then-
-// rename writing lives here, so no command can forget it), and the normal-map input (+Y/-Y, repair).
+// rename writing lives here, so no command can forget it), the normal-map input (auto/+Y/-Y, repair), and the
+// stderr printing of the library's warnings (libbake/core/warnings.h), which --quiet silences.
 #pragma once
 
 #include <filesystem>
@@ -19,8 +20,10 @@ struct RunOptions {
   int threads = 0;
   bool quiet = false;
   std::string progress = "auto";
-  // Applies --threads, and builds the progress reporter --progress/--quiet ask for.
+  // The progress reporter --progress/--quiet ask for.
   ProgressMode progress_mode() const;
+  // Applies --threads, and prints the library's warnings on stderr (`microbake: warning: <what> (<where>)`, each
+  // distinct line once) unless --quiet.
   void apply() const;
 };
 void add_run_options(CLI::App& app, RunOptions& options);
@@ -45,11 +48,11 @@ void add_output_option(CLI::App& app, OutputOption& output, const std::string& w
 
 struct NormalMapInput {
   std::string path;
-  std::string convention = "+Y";
+  std::string convention = "auto";
   bool repair_invalid = false;
   NormalMapLoadOptions load_options() const;
 };
-// The positional IN argument plus --convention and --repair-invalid.
+// The positional IN argument plus --convention (auto, the default, +Y or -Y) and --repair-invalid.
 void add_normal_map_input(CLI::App& app, NormalMapInput& input);
 
 // The end of a baking command's summary line: "; N invalid texels repaired" when the loader repaired any,

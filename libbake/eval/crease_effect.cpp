@@ -22,7 +22,7 @@ ShaderPtr crease_effect_shader(const EffectShaderRequest& request) {
   if (request.mode == EvalMode::reference) {
     const NormalMapRef& ref = *request.material.normal_map;
     const std::filesystem::path curves = request.use.files.at("curves");
-    const std::string key = "exact crease|" + ref.path.string() + "|" + convention_name(ref.convention) +
+    const std::string key = "exact crease|" + ref.path.string() + "|" + convention_request_name(ref.convention) +
                             (ref.repair ? "|repair|" : "|error|") + curves.string() + "|" +
                             options.value("profile", nlohmann::json()).dump();
     const auto exact = request.cache.get<ExactCreaseNormals>(key, [&] {

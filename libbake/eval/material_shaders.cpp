@@ -16,7 +16,7 @@ ShaderPtr baseline_shader(const Material& m, EvalMode mode, LoadCache& cache) {
   if (m.normal_map) {
     const NormalMapRef& ref = *m.normal_map;
     const std::string map_key =
-        ref.path.string() + "|" + convention_name(ref.convention) + (ref.repair ? "|repair" : "|error");
+        ref.path.string() + "|" + convention_request_name(ref.convention) + (ref.repair ? "|repair" : "|error");
     if (mode == EvalMode::reference) {
       normals.filter = NormalFilter::bilinear_level0;
       normals.pyramid = cache.get<NormalPyramid>("raw map|" + map_key, [&] {

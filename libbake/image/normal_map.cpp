@@ -5,11 +5,14 @@
 #include <xxhash.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 
 #include "formats/container_layout.h"
 #include "formats/error.h"
 #include "libbake/core/parallel.h"
+#include "libbake/core/warnings.h"
+#include "libbake/image/convention_detection.h"
 #include "libbake/image/image_io.h"
 
 namespace mbk {
@@ -32,9 +35,8 @@ const char* fault_name(TexelFault f) {
 }
 
 struct Decoding {
-  bool unsigned_codes;  // 2v - 1, else the value itself
-  uint32_t channels;    // channels used: 2 (x, y) or 3
-  bool flip_y;
+  bool unsigned_codes;       // 2v - 1, else the value itself
+  uint32_t channels;         // channels used: 2 (x, y) or 3
   double horizon_tolerance;  // how far below 0 a decoded z may be and still be the rounded horizon
 };
 
@@ -47,7 +49,6 @@ TexelFault decode_texel(const float* v, const Decoding& d, bool repair, Vec3f& o
   } else {
     z = d.unsigned_codes ? 2.0 * double(v[2]) - 1.0 : double(v[2]);
   }
-  if (d.flip_y) y = -y;
   TexelFault fault = TexelFault::none;
   if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) {
     fault = TexelFault::non_finite;
@@ -74,6 +75,45 @@ struct RowFaults {
   TexelFault first = TexelFault::none;
 };
 
+std::string fixed3(double v, bool sign) {
+  char text[32];
+  std::snprintf(text, sizeof text, sign ? "%+.3f" : "%.3f", v);
+  return text;
+}
+
+// Decides the convention of `map` (decoded as +Y), records how, warns when auto cannot decide or a requested
+// convention contradicts a confident statistic, and flips y when the map is -Y.
+void resolve_convention(NormalMap& map, const ConventionRequest& requested, InputRecord& record) {
+  const ConventionEvidence evidence = measure_convention(map);
+  const std::optional<YConvention> verdict = evidence.verdict();
+  const YConvention used = requested ? *requested : verdict.value_or(YConvention::plus_y);
+  record.convention = convention_name(used);
+  record.convention_requested = convention_request_name(requested);
+  record.convention_evidence = evidence.to_json();
+  record.convention_evidence["verdict"] = verdict ? convention_name(*verdict) : "undecidable";
+  const std::string numbers = "curl statistic " + fixed3(evidence.statistic, true) + ", confidence " +
+                              fixed3(std::abs(evidence.statistic), false);
+  const std::string needed = fixed3(evidence.required_confidence(), false);
+  std::string decision = "detected";
+  if (!requested && !verdict) {
+    decision = "undecidable, read as +Y";
+    warn("cannot tell the normal map's green-channel convention (" + numbers + ", " + needed +
+             " needed): read as +Y; name it (--convention +Y|-Y, or \"convention\" in a scene or graph file) to "
+             "silence this",
+         record.path);
+  } else if (requested && verdict && *verdict != *requested) {
+    decision = "as requested, against the statistic";
+    warn("the normal map is read as " + convention_name(*requested) + " as requested, but its slopes say " +
+             convention_name(*verdict) + " (" + numbers + ", " + needed + " needed): check its convention",
+         record.path);
+  } else if (requested) {
+    decision = "as requested";
+  }
+  record.convention_evidence["decision"] = decision;
+  if (used == YConvention::minus_y)
+    parallel_for(0, int64_t(map.texels.size()), [&](int64_t i) { map.texels[i].y() = -map.texels[i].y(); });
+}
+
 }  // namespace
 
 std::string convention_name(YConvention c) { return c == YConvention::plus_y ? "+Y" : "-Y"; }
@@ -86,6 +126,20 @@ YConvention parse_convention(const std::string& name) {
   throw Error(ExitCode::bad_command_line, "unknown normal-map convention '" + name + "' (use +Y/opengl or -Y/directx)");
 }
 
+std::string convention_request_name(const ConventionRequest& c) { return c ? convention_name(*c) : "auto"; }
+
+ConventionRequest parse_convention_request(const std::string& name) {
+  std::string n;
+  for (char ch : name) n += char(std::tolower(static_cast<unsigned char>(ch)));
+  if (n == "auto") return std::nullopt;
+  try {
+    return parse_convention(name);
+  } catch (const Error&) {
+    throw Error(ExitCode::bad_command_line,
+                "unknown normal-map convention '" + name + "' (use auto, +Y/opengl or -Y/directx)");
+  }
+}
+
 nlohmann::json InputRecord::to_json() const {
   return {{"path", path},
           {"content_hash", content_hash},
@@ -95,6 +149,8 @@ nlohmann::json InputRecord::to_json() const {
           {"channels", channels},
           {"pixel_format", pixel_format},
           {"convention", convention},
+          {"convention_requested", convention_requested},
+          {"convention_evidence", convention_evidence},
           {"invalid_policy", invalid_policy},
           {"repaired_texels", repaired_texels}};
 }
@@ -136,7 +192,6 @@ LoadedNormalMap load_normal_map(const std::filesystem::path& path, const NormalM
   Decoding d;
   d.unsigned_codes = !info.is_float && !info.is_signed;
   d.channels = std::min<uint32_t>(image.channels, 3);
-  d.flip_y = options.convention == YConvention::minus_y;
   d.horizon_tolerance = d.unsigned_codes ? 1.0 / (std::ldexp(1.0, info.integer_bits) - 1.0) * (1.0 + 1e-6) : 0.0;
   const bool repair = options.invalid == InvalidTexelPolicy::repair;
 
@@ -176,7 +231,7 @@ LoadedNormalMap load_normal_map(const std::filesystem::path& path, const NormalM
   r.height = map.height;
   r.channels = info.file_channels;
   r.pixel_format = info.pixel_format;
-  r.convention = convention_name(options.convention);
+  resolve_convention(map, options.convention, r);
   r.invalid_policy = repair ? "repair" : "error";
   r.repaired_texels = invalid;
   return out;

@@ -4,8 +4,9 @@
 // - Tangent space: x along +u, y along +v, z out of the surface. Texture coordinates have u to the right and
 //   v up; texel (x, row) of a W x H image has its centre at u = (x + 0.5) / W, v = 1 - (row + 0.5) / H, and
 //   row 0 is the top row of the image as stored in the file.
-// - +Y ("OpenGL", the default): green grows with tangent y (up in the image). -Y ("DirectX"): green grows
-//   downward; loading a -Y map flips y so that every NormalMap in memory is +Y.
+// - +Y ("OpenGL"): green grows with tangent y (up in the image). -Y ("DirectX"): green grows downward; loading
+//   a -Y map flips y so that every NormalMap in memory is +Y. The default, auto, tells the two apart by the curl
+//   of the slope field (convention_detection.h) and reads a map it cannot decide as +Y, with a warning.
 // - Encodings: unsigned integer images (PNG 8/16-bit, TGA, JPEG, TIFF) map [0, 1] -> [-1, 1] by 2v - 1;
 //   float images (EXR half/float, float TIFF) are taken as the vector itself, and so are the rare signed
 //   integer images (already in [-1, 1]). Two-channel maps are (x, y) with z = sqrt(max(0, 1 - x^2 - y^2));
@@ -21,6 +22,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,6 +35,12 @@ namespace mbk {
 enum class YConvention { plus_y, minus_y };
 std::string convention_name(YConvention c);             // "+Y" or "-Y"
 YConvention parse_convention(const std::string& name);  // accepts +Y/-Y, opengl/directx; Error(bad_command_line)
+
+// A requested convention: one of the two, or nullopt for auto (detect; +Y when undecidable).
+using ConventionRequest = std::optional<YConvention>;
+std::string convention_request_name(const ConventionRequest& c);  // "auto", "+Y" or "-Y"
+// Accepts auto and what parse_convention accepts, any case; Error(bad_command_line) naming all of them.
+ConventionRequest parse_convention_request(const std::string& name);
 
 enum class InvalidTexelPolicy { error, repair };
 
@@ -48,7 +56,7 @@ struct NormalMap {
 };
 
 struct NormalMapLoadOptions {
-  YConvention convention = YConvention::plus_y;
+  ConventionRequest convention;  // auto
   InvalidTexelPolicy invalid = InvalidTexelPolicy::error;
 };
 
@@ -58,8 +66,13 @@ struct InputRecord {
   std::string content_hash;  // "xxh3:" + 16 hex digits of the file's bytes
   uint64_t bytes = 0;
   uint32_t width = 0, height = 0, channels = 0;
-  std::string pixel_format;    // OpenImageIO's name: uint8, uint16, half, float...
-  std::string convention;      // "+Y" or "-Y"
+  std::string pixel_format;          // OpenImageIO's name: uint8, uint16, half, float...
+  std::string convention;            // the one the map was read as: "+Y" or "-Y"
+  std::string convention_requested;  // "auto", "+Y" or "-Y"
+  // The curl statistic of the file's green channel and how it was used (ConventionEvidence::to_json() plus
+  // "verdict": "+Y", "-Y" or "undecidable", and "decision": "detected", "undecidable, read as +Y", "as requested"
+  // or "as requested, against the statistic").
+  nlohmann::json convention_evidence = nlohmann::json::object();
   std::string invalid_policy;  // "error" or "repair"
   uint64_t repaired_texels = 0;
   nlohmann::json to_json() const;
@@ -71,7 +84,8 @@ struct LoadedNormalMap {
 };
 
 // Throws Error: io_failure (missing/unreadable file), invalid_input (not an image, one channel, invalid
-// texels under the error policy, too large).
+// texels under the error policy, too large). Raises one warning (libbake/core/warnings.h) when auto cannot decide
+// the convention (the map is read as +Y) or when a requested convention contradicts a confident statistic.
 LoadedNormalMap load_normal_map(const std::filesystem::path& path, const NormalMapLoadOptions& options);
 
 // The content hash recorded for inputs ("xxh3:<16 hex>"). Throws Error(io_failure).

@@ -47,10 +47,11 @@ AssetFreshness check_asset_freshness(const PlannedAsset& planned, const std::fil
       return stale("input " + planned_in.path.filename().string() + " changed (recorded " + text_of(recorded_hash) +
                    ", now " + now + ")");
     if (!planned_in.normal_map) continue;
-    const std::string convention = convention_name(planned_in.normal_map->convention);
-    if (in.value("convention", nlohmann::json()) != convention)
-      return stale("normal-map convention changed (recorded " + text_of(in.value("convention", nlohmann::json())) +
-                   ", now " + convention + ")");
+    // The convention asked for: what auto decides is a function of the input's bytes, compared above.
+    const std::string convention = convention_request_name(planned_in.normal_map->convention);
+    if (in.value("convention_requested", nlohmann::json()) != convention)
+      return stale("normal-map convention changed (recorded " +
+                   text_of(in.value("convention_requested", nlohmann::json())) + ", now " + convention + ")");
     const std::string policy = planned_in.normal_map->repair ? "repair" : "error";
     if (in.value("invalid_policy", nlohmann::json()) != policy)
       return stale("invalid-texel policy changed (recorded " + text_of(in.value("invalid_policy", nlohmann::json())) +

@@ -2,7 +2,7 @@
 // rebuilds the others; `render` refuses stale ones. A file is up to date when it opens as a valid asset
 // (formats/asset.h: structure, checksums, required sections) of the planned kind and of this microbake
 // version, records as many inputs as the recipe has, each with the content hash of the recipe's input file
-// now (and, for normal maps, the same convention and invalid-texel policy), and records the recipe's
+// now (and, for normal maps, the same requested convention and invalid-texel policy), and records the recipe's
 // canonical parameters with the same values. An input file that no longer exists is not compared (assets
 // can ship without their sources; `bake` refuses missing inputs before it gets here).
 #pragma once

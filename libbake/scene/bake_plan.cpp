@@ -39,7 +39,8 @@ std::vector<PlannedAsset> plan_assets(const Scene& scene) {
         for (const BakeInput& in : recipe.inputs) {
           nlohmann::json how = nlohmann::json::object();
           if (in.normal_map)
-            how = {{"convention", convention_name(in.normal_map->convention)}, {"repair", in.normal_map->repair}};
+            how = {{"convention", convention_request_name(in.normal_map->convention)},
+                   {"repair", in.normal_map->repair}};
           std::error_code ec;
           fs::path canonical = fs::weakly_canonical(in.path, ec);
           if (ec) canonical = fs::absolute(in.path).lexically_normal();

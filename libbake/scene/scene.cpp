@@ -82,10 +82,10 @@ NormalMapRef parse_normal_map(JsonObjectReader r, const fs::path& folder) {
   if (m.path_as_written.empty()) fail("empty path", r.child("path"));
   m.path = resolve(folder, m.path_as_written);
   if (const auto* v = r.optional("convention")) {
-    // The same names as the commands' --convention: +Y/opengl or -Y/directx, any case.
+    // The same names as the commands' --convention: auto, +Y/opengl or -Y/directx, any case.
     const std::string name = json_string(*v, r.child("convention"));
     try {
-      m.convention = parse_convention(name);
+      m.convention = parse_convention_request(name);
     } catch (const Error& e) {
       fail(e.what(), r.child("convention"));
     }

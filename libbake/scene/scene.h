@@ -49,9 +49,9 @@ enum class Distribution { beckmann, ggx };
 std::string distribution_name(Distribution d);
 
 struct NormalMapRef {
-  std::string path_as_written;  // as in the scene file
-  std::filesystem::path path;   // resolved against the scene folder
-  YConvention convention = YConvention::plus_y;
+  std::string path_as_written;   // as in the scene file
+  std::filesystem::path path;    // resolved against the scene folder
+  ConventionRequest convention;  // auto when the scene names none
   bool repair = false;
   NormalMapLoadOptions load_options() const;
 };

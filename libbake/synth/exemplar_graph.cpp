@@ -64,7 +64,7 @@ ExemplarGraph parse_exemplar_graph(const nlohmann::json& json, const std::string
     if (const nlohmann::json* v = top.optional("normal_map")) g.normal_map = json_bool(*v, "normal_map");
     if (const nlohmann::json* v = top.optional("convention")) {
       if (!g.normal_map) fail("'convention' applies to normal-map graphs only (\"normal_map\": true)", "convention");
-      g.convention = convention_name(parse_convention(json_string(*v, "convention")));
+      g.convention = convention_request_name(parse_convention_request(json_string(*v, "convention")));
     }
     top.reject_unknown_keys();
     // Reachability from the root along the edges (Sec. 5.2: synthesis starts at the root and follows edges).

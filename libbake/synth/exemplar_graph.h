@@ -9,7 +9,7 @@
 //    "root": "rock",                                            the coarsest-level start of synthesis
 //    "edges": [{"source": "rock", "destination": "pebbles", "r": 2}, ...],
 //    "normal_map": false,                                       optional: the exemplars are normal maps
-//    "convention": "+Y"}                                        optional, for normal maps: +Y/-Y (opengl/directx)
+//    "convention": "auto"}                                      optional, for normal maps: auto (default), +Y/-Y
 // Normal-map exemplars are decoded and renormalised as every baker reads normal maps (libbake/image/normal_map.h),
 // analysed as vectors, and synthesized as unit normals.
 // Exemplars are images OpenImageIO reads (colour images or normal maps), all of one size m x m with m = 2^L a
@@ -41,7 +41,7 @@ struct ExemplarGraph {
   uint32_t root = 0;
   std::vector<GraphEdge> edges;  // as listed, implicit self-loops not included
   bool normal_map = false;
-  std::string convention = "+Y";  // of normal-map exemplars
+  std::string convention = "auto";  // of normal-map exemplars: auto, +Y or -Y
 };
 
 // Parses and checks the structure (ids, root, edges, reachability; not the images). Error(invalid_input) naming

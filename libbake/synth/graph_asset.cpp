@@ -19,7 +19,7 @@ LoadedExemplars load_graph_exemplars(const ExemplarGraph& graph, const std::stri
     nlohmann::json record;
     if (graph.normal_map) {  // decoded and renormalised like every baker's input; stored as vectors
       NormalMapLoadOptions options;
-      options.convention = parse_convention(graph.convention);
+      options.convention = parse_convention_request(graph.convention);
       const LoadedNormalMap loaded = load_normal_map(e.path, options);
       im = {loaded.map.width, loaded.map.height, 3, {}};
       for (const Vec3f& n : loaded.map.texels) im.pixels.insert(im.pixels.end(), {n.x(), n.y(), n.z()});
@@ -102,7 +102,8 @@ AssetWriter graph_asset_writer(const ExemplarGraph& graph, const GraphAnalysis& 
        "toroidal; 0xFFFFFFFF x 4 for none"},
       {"transfer", "constant offset b: destination + b matches the source ([Han08] Sec. 5.3)"}};
   if (graph.normal_map)
-    metadata["conventions"]["normal_convention"] = "+Y (the exemplars decoded from " + graph.convention + ")";
+    metadata["conventions"]["normal_convention"] =
+        "+Y (the exemplars decoded as their inputs' convention; requested " + graph.convention + ")";
   size_t across = 0, filled = 0;
   double offset = 0.0;
   for (size_t s = 0; s < a.candidates.size(); ++s) {

@@ -1,17 +1,21 @@
 // Real normal maps nobody here made (MICROBAKE_REAL_DATA_DIR, see SOURCES.md there; skipped when absent):
 // every normal map loads as unit vectors (one, lossy, needs the repair policy), one-channel height maps are
-// refused as such, the CLI bakes a valid mip asset from each, and the +Y/-Y option does what its name says: on the maps
-// SOURCES.md finds clearly -Y, loading them as -Y leaves a far smaller curl (an integrable slope field) than as +Y.
+// refused as such, the CLI bakes a valid mip asset from each, and the default convention, auto, reads each as
+// SOURCES.md says (and its green-flipped copy the other way; flakes undecidable, read as +Y with one warning).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <iostream>
 
 #include "formats/error.h"
+#include "libbake/image/convention_detection.h"
 #include "libbake/image/image_io.h"
 #include "libbake/image/normal_map.h"
-#include "tests/image/slope_curl.h"
+#include "libbake/image/normal_map_encoding.h"
 #include "tests/image/cli_run.h"
+#include "tests/image/warning_capture.h"
 
 namespace mbk {
 namespace {
@@ -81,23 +85,51 @@ TEST(RealMaps, NormalMapsLoadAsUnitVectorsAndHeightMapsAreRefused) {
   }
 }
 
-TEST(RealMaps, MinusYOptionMakesDirectXMapsIntegrable) {
-  // SOURCES.md: curl-test energy ratios 44.8, 219.8, 36.3 and 31.1 in favour of -Y for the first four; the
-  // last two are weak (2.5) or undetermined (flakes are not a height field), so they are only reported.
-  const std::pair<const char*, bool> maps[] = {{"scifi_panel_bevels.png", true}, {"brushed_streaks_diagonal.png", true},
-                                               {"brick_floor.png", true},        {"ground_dirt_16bit.png", true},
-                                               {"leather_grain.png", false},     {"metallic_flakes.png", false}};
+// The conventions SOURCES.md gives (curl test and, where a height map comes with the file, its gradient agree):
+// -Y for five maps, leather_grain only weakly (energy ratio 2.5); the flakes are not a height field.
+const std::pair<const char*, const char*> kSourcesConventions[] = {
+    {"scifi_panel_bevels.png", "-Y"}, {"brushed_streaks_diagonal.png", "-Y"},
+    {"brick_floor.png", "-Y"},        {"ground_dirt_16bit.png", "-Y"},
+    {"leather_grain.png", "-Y"},      {"metallic_flakes.png", "undecidable"}};
+
+TEST(RealMaps, AutoFindsTheConventionSourcesMdGivesAndTheOppositeWhenGreenIsFlipped) {
+  test::ScratchDir dir;
   bool any = false;
-  for (const auto& [name, clear] : maps) {
+  for (const auto& [name, expected] : kSourcesConventions) {
     const auto p = kRealDir / name;
     if (!std::filesystem::exists(p)) continue;
     any = true;
-    const double plus = test::curl_ratio(load_normal_map(p, {YConvention::plus_y, InvalidTexelPolicy::repair}).map);
-    const double minus = test::curl_ratio(load_normal_map(p, {YConvention::minus_y, InvalidTexelPolicy::repair}).map);
-    std::cout << "[real] " << name << ": curl ratio +Y " << plus << ", -Y " << minus << "\n";
-    if (clear) {
-      EXPECT_GT(plus, 2.0 * minus) << name;
+    const InvalidTexelPolicy policy = p.filename() == kFlakes ? InvalidTexelPolicy::repair : InvalidTexelPolicy::error;
+    test::WarningCapture warnings;
+    const auto t0 = std::chrono::steady_clock::now();
+    const LoadedNormalMap m = load_normal_map(p, {std::nullopt, policy});
+    const auto t1 = std::chrono::steady_clock::now();
+    const ConventionEvidence again = measure_convention(m.map);  // the map as read: -Y maps give -s
+    const auto t2 = std::chrono::steady_clock::now();
+    const nlohmann::json& e = m.record.convention_evidence;
+    EXPECT_EQ(std::abs(again.statistic), std::abs(double(e["statistic"]))) << name;
+    EXPECT_EQ(e["verdict"], expected) << name;
+    EXPECT_EQ(m.record.convention, std::string(expected) == "undecidable" ? "+Y" : expected) << name;
+    EXPECT_EQ(warnings.lines().size(), std::string(expected) == "undecidable" ? 1u : 0u) << name;
+    // The green-flipped copy of the file, written as a 16-bit PNG and read back with auto: the other convention
+    // (and the same vectors), or undecidable again.
+    NormalMap flipped = load_normal_map(p, {YConvention::plus_y, policy}).map;  // green as stored
+    for (Vec3f& n : flipped.texels) n.y() = -n.y();
+    save_normal_map(dir / "flipped.png", flipped);
+    const LoadedNormalMap f = load_normal_map(dir / "flipped.png", {});
+    const nlohmann::json& fe = f.record.convention_evidence;
+    const std::string opposite = std::string(expected) == "-Y" ? "+Y" : expected;
+    EXPECT_EQ(fe["verdict"], opposite) << name;
+    if (opposite != "undecidable") {
+      for (size_t i = 0; i < m.map.texels.size(); ++i)
+        ASSERT_LT((f.map.texels[i] - m.map.texels[i]).norm(), 1e-4f) << name << " texel " << i;
     }
+    std::cout << "[real] " << name << ": curl statistic " << double(e["statistic"]) << " (energy ratio "
+              << (1 + std::abs(double(e["statistic"]))) / (1 - std::abs(double(e["statistic"]))) << "), n_eff "
+              << double(e["effective_stencils"]) << ", needed " << double(e["required_confidence"]) << " -> "
+              << std::string(e["verdict"]) << "; green-flipped " << double(fe["statistic"]) << " -> "
+              << std::string(fe["verdict"]) << "; load " << std::chrono::duration<double>(t1 - t0).count()
+              << " s, statistic " << std::chrono::duration<double>(t2 - t1).count() << " s\n";
   }
   if (!any) GTEST_SKIP() << "no real maps in " << kRealDir;
 }
@@ -108,7 +140,8 @@ TEST(RealMaps, CliBakesAValidMipAssetFromEachMap) {
   test::ScratchDir dir;
   for (const auto& p : files) {
     const auto asset = dir / (p.stem().string() + ".mbk");
-    const auto r = test::run_cli("mip '" + p.string() + "' --convention -Y -q -o '" + asset.string() + "'", dir);
+    // No --convention: auto reads each as SOURCES.md says, silently, and warns once about the flakes.
+    const auto r = test::run_cli("mip '" + p.string() + "' -o '" + asset.string() + "'", dir);
     if (is_height_map(p)) {
       EXPECT_EQ(r.exit_code, 3) << p;
       EXPECT_FALSE(std::filesystem::exists(asset));
@@ -118,13 +151,22 @@ TEST(RealMaps, CliBakesAValidMipAssetFromEachMap) {
       EXPECT_EQ(r.exit_code, 3) << p;
       EXPECT_NE(r.err.find("--repair-invalid"), std::string::npos) << r.err;
       EXPECT_FALSE(std::filesystem::exists(asset));
-      const auto repaired = test::run_cli(
-          "mip '" + p.string() + "' --convention -Y --repair-invalid -q -o '" + asset.string() + "'", dir);
+      const auto repaired = test::run_cli("mip '" + p.string() + "' --repair-invalid -o '" + asset.string() + "'", dir);
       ASSERT_EQ(repaired.exit_code, 0) << repaired.err;
+      EXPECT_EQ(repaired.err, "microbake: warning: cannot tell the normal map's green-channel convention (" +
+                                  repaired.err.substr(repaired.err.find("curl statistic")));
+      EXPECT_EQ(std::count(repaired.err.begin(), repaired.err.end(), '\n'), 1) << repaired.err;
+      EXPECT_NE(repaired.err.find("read as +Y"), std::string::npos) << repaired.err;
     } else {
       ASSERT_EQ(r.exit_code, 0) << p << ": " << r.err;
+      EXPECT_EQ(r.err, "") << p;
     }
     EXPECT_EQ(test::run_cli("validate '" + asset.string() + "'", dir).exit_code, 0) << p;
+    const auto info = test::run_cli("info '" + asset.string() + "'", dir);
+    EXPECT_NE(info.out.find(p.filename() == kFlakes ? "convention: +Y, undecidable, read as +Y (requested auto"
+                                                    : "convention: -Y, detected (requested auto"),
+              std::string::npos)
+        << info.out;
   }
 }
 

@@ -119,6 +119,26 @@ TEST_F(AssetFreshnessTest, ChangedConventionIsStale) {
   EXPECT_NE(f.reason.find("convention changed (recorded +Y, now -Y)"), std::string::npos) << f.reason;
 }
 
+TEST_F(AssetFreshnessTest, AutoIsTheDefaultAndItsDecisionKeepsTheAssetUpToDate) {
+  testing::write_bumpy_map(dir / "map.exr");
+  const json materials = {{"a", {{"normal_map", {{"path", "map.exr"}}}, {"effects", {"mip"}}}},
+                          {"b", json::object()},
+                          {"c", json::object()}};
+  testing::write_json(dir / "s.json", testing::small_scene(materials));
+  const PlannedAsset a = plan_assets(load_scene(dir / "s.json")).at(0);
+  EXPECT_EQ(a.recipe.inputs.at(0).normal_map->convention, std::nullopt);
+  bake(a, dir / a.file_name);
+  // What auto decided is a function of the map's bytes, which the content hash already pins down.
+  const AssetFreshness f = check(a, dir / a.file_name);
+  EXPECT_EQ(f.state, AssetState::up_to_date) << f.reason;
+  const nlohmann::json in = Asset::open(dir / a.file_name).metadata()["inputs"][0];
+  EXPECT_EQ(in["convention_requested"], "auto");
+  EXPECT_TRUE(in["convention_evidence"].contains("decision"));
+  const AssetFreshness g = check(planned_for("+Y"), dir / a.file_name);
+  EXPECT_EQ(g.state, AssetState::stale);
+  EXPECT_NE(g.reason.find("convention changed (recorded auto, now +Y)"), std::string::npos) << g.reason;
+}
+
 TEST_F(AssetFreshnessTest, ChangedParameterIsStale) {
   testing::write_bumpy_map(dir / "map.exr");
   PlannedAsset a = planned_for();

@@ -92,12 +92,19 @@ TEST(SceneFile, FullSceneParsesWithEveryValue) {
 }
 
 TEST(SceneFile, ConventionNamesAreTheCommandLines) {
-  for (const auto& [name, expected] : std::vector<std::pair<std::string, YConvention>>{
-           {"DirectX", YConvention::minus_y}, {"-y", YConvention::minus_y}, {"OpenGL", YConvention::plus_y}}) {
+  for (const auto& [name, expected] :
+       std::vector<std::pair<std::string, ConventionRequest>>{{"DirectX", YConvention::minus_y},
+                                                              {"-y", YConvention::minus_y},
+                                                              {"OpenGL", YConvention::plus_y},
+                                                              {"Auto", std::nullopt}}) {
     json j = full_scene();
     j["materials"]["brick"]["normal_map"]["convention"] = name;
     EXPECT_EQ(parse_scene(j, "/scenes").materials.at("brick").normal_map->convention, expected) << name;
   }
+  // auto is the default.
+  json j = full_scene();
+  j["materials"]["brick"]["normal_map"].erase("convention");
+  EXPECT_EQ(parse_scene(j, "/scenes").materials.at("brick").normal_map->convention, std::nullopt);
 }
 
 TEST(SceneFile, EffectMayBeAnObjectWithItsName) {
