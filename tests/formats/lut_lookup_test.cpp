@@ -69,7 +69,7 @@ TEST(LutLookup, CellIndexFindsTheSegmentABinarySearchFinds) {
     const double probe = q % 2 ? t : double(k[size_t(q / 2) % k.size()]);  // also every knot exactly
     size_t i = size_t(std::upper_bound(k.begin(), k.end(), probe, [](double a, float b) { return a < b; }) - k.begin());
     i = std::min(i == 0 ? 0 : i - 1, k.size() - 2);
-    const double expected = v[i] + (probe - k[i]) / (double(k[i + 1]) - k[i]) * (double(v[i + 1]) - v[i]);
+    const double expected = v[i] + (probe - k[i]) * ((double(v[i + 1]) - v[i]) / (double(k[i + 1]) - k[i]));
     ASSERT_EQ(f(probe).value, expected) << probe;
   }
 }
