@@ -14,8 +14,29 @@
 // Stopping: when the weighted mean log-likelihood sum_i w_i log g(n_i) rises by less than `tolerance` (or
 // after max_iterations). EM never lowers it for C = 0; with C > 0 a fall also stops it.
 // Empty lobes: a lobe whose amplitude falls below kEmptyAmplitude is emptied (alpha = 0, r = 0) and takes no
-// further part: re-seeding it elsewhere would only duplicate a lobe when the texel has fewer distinct normals
-// than lobes (test: VmfMixture.MoreLobesThanDistinctNormals).
+// further part; a texel with fewer distinct normals than lobes keeps the extra lobes empty (test:
+// VmfMixture.MoreLobesThanDistinctNormals).
+//
+// Collapse guard (deviation [Han07], whose Alg. 7.1 has none). A lobe whose normals are one direction is a
+// fixed point of EM at the kappa cap: r_j = n_i gives kappa_max, and its responsibility for any other normal
+// at angle theta, ~exp(-kappa_max theta^2 / 2), is 0, so it never grows. Farthest-apart seeding picks outlying
+// normals (k-center is an outlier criterion) and child lobes at the cap, so coarse texels ended with lobes of
+// amplitude ~1/N on one outlying normal each. The guard is a minimum amplitude with a re-seed, not a kappa
+// prior (a prior would lower kappa below the cap for identical normals, which VmfMixture.IdenticalNormalsCapKappa
+// keeps at kappa_max): at a fixed point of EM (the log-likelihood gain below `tolerance`, or the budget spent)
+// the smallest live lobe with
+//     alpha_j < min_amplitude                                             (default kVmfMinAmplitude = 0.01)
+// gets a trial re-seed where the rest of the mixture explains the normals worst: among K = 8 candidates, the
+// normals at weight quantiles 0, 1/16, ..., 7/16 of the normals sorted by increasing mixture density p(n_i)
+// (the first is the worst-explained normal), the one that maximises the gain of a lobe of amplitude a = 1/J
+//     G(c) = sum_i w_i log(1 - a + a g(n_i; kappa_s, n_c) / p(n_i)),
+// with kappa_s the pooled concentration of the live lobes, A^-1(sum_l alpha_l |r_l| / sum_l alpha_l) (the
+// other amplitudes scaled by 1 - a). EM continues to its next fixed point; if the log-likelihood is then
+// lower than before the trial, the trial is undone and the guard stops (a small lobe that is the better use
+// of its slot, e.g. on a cluster of identical normals, stays: VmfMixture.GuardNeverLowersTheLikelihood).
+// At most J trials per fit, and only with iterations left. So the guarded fit never ends below the unguarded
+// one from the same start, and an isolated outlier does not keep a lobe when the lobe fits a cluster better
+// (VmfMixture.OutlierGetsNoLobe). The stored state is always that of an M-step.
 // Deterministic: sums over normals run in fixed chunks whose partial sums are added in chunk order, so the
 // result is the same whatever the thread count, and large texels are split across threads.
 #pragma once
@@ -31,6 +52,10 @@ namespace mbk {
 inline constexpr double kVmfKappaMax = 1e6;
 // Amplitude below which a lobe is emptied.
 inline constexpr double kEmptyAmplitude = 1e-9;
+// Smallest amplitude a lobe may keep at a fixed point of EM (the collapse guard above).
+inline constexpr double kVmfMinAmplitude = 0.01;
+// EM iterations at most per fit by default.
+inline constexpr int kVmfDefaultMaxIterations = 1000;
 
 struct VmfComponent {
   double alpha = 0.0;       // amplitude; 0 = empty lobe
@@ -46,15 +71,17 @@ struct WeightedNormal {
 
 struct EmOptions {
   double tolerance = 1e-6;  // on the weighted mean log-likelihood (nats per normal)
-  int max_iterations = 100;
+  int max_iterations = kVmfDefaultMaxIterations;
   double kappa_max = kVmfKappaMax;
-  double align = 0.0;  // C of Eq. 7.26
+  double align = 0.0;                       // C of Eq. 7.26
+  double min_amplitude = kVmfMinAmplitude;  // the collapse guard; 0 disables it
 };
 
 struct EmReport {
   int iterations = 0;
   bool converged = false;
   double log_likelihood = 0.0;  // weighted mean, after the last E-step
+  int reseeds = 0;              // trial re-seeds of the collapse guard that were kept
 };
 
 // Runs EM from the given start (non-empty lobes need alpha > 0 and unit mu; their kappa is used as given).
@@ -72,7 +99,15 @@ std::vector<double> lobe_features(std::span<const WeightedNormal> normals, std::
 // first of equals), then repeatedly the one whose smallest 1 - mu.mu_s to the chosen seeds is largest, until J
 // are chosen or every remaining candidate coincides (1 - cos <= 1e-12) with a chosen one. Returns J lobes: the
 // chosen ones (their kappa and mu, amplitude 1 / count) then empty ones.
-std::vector<VmfComponent> farthest_apart_seeds(std::span<const VmfComponent> candidates, int J);
+// SeedRule::mass_weighted (deviation [Han07]) picks the largest alpha_c (1 - mu_c.mu_s) instead after the first,
+// among the candidates that do not coincide with a chosen one: pure farthest-point seeding is drawn to outlying
+// lobes of negligible mass (k-center is an outlier criterion), the weighted rule to heavy distinct ones.
+enum class SeedRule { farthest, mass_weighted };
+std::vector<VmfComponent> farthest_apart_seeds(std::span<const VmfComponent> candidates, int J,
+                                               SeedRule rule = SeedRule::farthest);
+
+// The weighted mean log-likelihood sum_i w_i log g(n_i) of a mixture (its live lobes; amplitudes as given).
+double vmf_mixture_log_likelihood(std::span<const WeightedNormal> normals, const std::vector<VmfComponent>& mixture);
 
 // Sets kappa = A^-1(|r|) (capped) and mu = r / |r| (mu = +z for r = 0).
 void set_lobe_from_resultant(VmfComponent& lobe, double kappa_max);
