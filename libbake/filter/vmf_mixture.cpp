@@ -132,10 +132,10 @@ double log_add(double a, double b) {
 }
 
 // The collapse guard's re-seed (vmf_mixture.h): lobe `slot` (already emptied) goes to the best of the
-// candidate normals, with amplitude 1/J and the pooled kappa of the live lobes.
+// candidate normals and concentrations, with amplitude 1/J.
 void reseed(std::span<const WeightedNormal> normals, std::vector<VmfComponent>& mixture, size_t slot,
             double kappa_max) {
-  constexpr int kCandidates = 8;
+  constexpr size_t kCandidates = 16;
   const size_t N = normals.size(), J = mixture.size();
   double live_alpha = 0.0, pooled = 0.0;
   for (const VmfComponent& c : mixture)
@@ -150,29 +150,31 @@ void reseed(std::span<const WeightedNormal> normals, std::vector<VmfComponent>& 
   std::vector<size_t> candidates;
   double cumulative = 0.0;
   for (size_t r = 0, k = 0; r < N && k < kCandidates; ++r) {
-    if (cumulative >= double(k) / (2.0 * kCandidates)) {
+    if (cumulative >= double(k) / kCandidates) {
       candidates.push_back(order[r]);
-      while (k < kCandidates && cumulative >= double(k) / (2.0 * kCandidates)) ++k;
+      while (k < kCandidates && cumulative >= double(k) / kCandidates) ++k;
     }
     cumulative += normals[order[r]].w;
   }
   const double a = 1.0 / double(J), log_keep = std::log1p(-a), log_a = std::log(a);
   size_t best = candidates[0];
-  double best_gain = -std::numeric_limits<double>::infinity();
+  double best_gain = -std::numeric_limits<double>::infinity(), best_kappa = kappa;
   for (size_t c : candidates) {
     const Vec3 mu = normals[c].n;
-    const double gain = chunked_sum(N, [&](size_t i) {
-      const double with = log_add(log_keep + log_p[i], log_a + vmf_log_density(kappa, mu.dot(normals[i].n)));
-      return normals[i].w * (with - log_p[i]);
-    });
-    if (gain > best_gain) best_gain = gain, best = c;
+    for (double k : {kappa, kappa_max}) {
+      const double gain = chunked_sum(N, [&](size_t i) {
+        const double with = log_add(log_keep + log_p[i], log_a + vmf_log_density(k, mu.dot(normals[i].n)));
+        return normals[i].w * (with - log_p[i]);
+      });
+      if (gain > best_gain) best_gain = gain, best = c, best_kappa = k;
+    }
   }
   for (VmfComponent& c : mixture) c.alpha *= (1.0 - a) / live_alpha;
   VmfComponent& lobe = mixture[slot];
   lobe.alpha = a;
-  lobe.kappa = kappa;
+  lobe.kappa = best_kappa;
   lobe.mu = normals[best].n;
-  lobe.r = vmf_mean_length(kappa) * lobe.mu;
+  lobe.r = vmf_mean_length(best_kappa) * lobe.mu;
 }
 
 }  // namespace
@@ -223,9 +225,10 @@ EmReport fit_vmf_mixture(std::span<const WeightedNormal> normals, std::vector<Vm
     previous = p.log_likelihood;
     if (!stalled && it + 1 < options.max_iterations) continue;
     report.converged = stalled;
-    // A fixed point (or the budget spent). A trial re-seed that ended lower is undone, and the guard stops.
+    // A fixed point (or the budget spent). A trial re-seed that did not end higher by `tolerance` is undone, and
+    // the guard stops.
     if (!before_reseed.empty()) {
-      if (p.log_likelihood < before_reseed_ll) {
+      if (p.log_likelihood < before_reseed_ll + options.tolerance) {
         mixture = std::move(before_reseed);
         report.log_likelihood = before_reseed_ll;
         --report.reseeds;
@@ -234,19 +237,18 @@ EmReport fit_vmf_mixture(std::span<const WeightedNormal> normals, std::vector<Vm
       }
       before_reseed.clear();
     }
-    // The collapse guard: the smallest live lobe under the minimum amplitude gets a trial re-seed.
-    size_t collapsed = J, live = 0;
+    // The collapse guard: the weakest (smallest) live lobe gets a trial re-seed.
+    size_t weakest = J, live = 0;
     for (size_t j = 0; j < J; ++j) {
       if (mixture[j].alpha <= 0.0) continue;
       ++live;
-      if (mixture[j].alpha < options.min_amplitude && (collapsed == J || mixture[j].alpha < mixture[collapsed].alpha))
-        collapsed = j;
+      if (weakest == J || mixture[j].alpha < mixture[weakest].alpha) weakest = j;
     }
-    if (collapsed == J || live < 2 || reseeds_left == 0 || it + 1 == options.max_iterations) break;
+    if (!options.reseed || weakest == J || live < 2 || reseeds_left == 0 || it + 1 == options.max_iterations) break;
     before_reseed = mixture;
     before_reseed_ll = p.log_likelihood;
-    mixture[collapsed] = VmfComponent{};
-    reseed(normals, mixture, collapsed, options.kappa_max);
+    mixture[weakest] = VmfComponent{};
+    reseed(normals, mixture, weakest, options.kappa_max);
     --reseeds_left;
     ++report.reseeds;
     previous = -std::numeric_limits<double>::infinity();

@@ -21,22 +21,24 @@
 // fixed point of EM at the kappa cap: r_j = n_i gives kappa_max, and its responsibility for any other normal
 // at angle theta, ~exp(-kappa_max theta^2 / 2), is 0, so it never grows. Farthest-apart seeding picks outlying
 // normals (k-center is an outlier criterion) and child lobes at the cap, so coarse texels ended with lobes of
-// amplitude ~1/N on one outlying normal each. The guard is a minimum amplitude with a re-seed, not a kappa
-// prior (a prior would lower kappa below the cap for identical normals, which VmfMixture.IdenticalNormalsCapKappa
-// keeps at kappa_max): at a fixed point of EM (the log-likelihood gain below `tolerance`, or the budget spent)
-// the smallest live lobe with
-//     alpha_j < min_amplitude                                             (default kVmfMinAmplitude = 0.01)
-// gets a trial re-seed where the rest of the mixture explains the normals worst: among K = 8 candidates, the
-// normals at weight quantiles 0, 1/16, ..., 7/16 of the normals sorted by increasing mixture density p(n_i)
-// (the first is the worst-explained normal), the one that maximises the gain of a lobe of amplitude a = 1/J
-//     G(c) = sum_i w_i log(1 - a + a g(n_i; kappa_s, n_c) / p(n_i)),
-// with kappa_s the pooled concentration of the live lobes, A^-1(sum_l alpha_l |r_l| / sum_l alpha_l) (the
-// other amplitudes scaled by 1 - a). EM continues to its next fixed point; if the log-likelihood is then
-// lower than before the trial, the trial is undone and the guard stops (a small lobe that is the better use
-// of its slot, e.g. on a cluster of identical normals, stays: VmfMixture.GuardNeverLowersTheLikelihood).
-// At most J trials per fit, and only with iterations left. So the guarded fit never ends below the unguarded
-// one from the same start, and an isolated outlier does not keep a lobe when the lobe fits a cluster better
-// (VmfMixture.OutlierGetsNoLobe). The stored state is always that of an M-step.
+// amplitude ~1/N on one outlying normal each. The guard is neither a minimum weight nor a kappa prior: both
+// change the objective, and on piecewise-constant and 8-bit maps a small lobe at the cap on a cluster of
+// identical normals is often the best use of its slot (a prior would also lower kappa below the cap for
+// identical normals, which VmfMixture.IdenticalNormalsCapKappa keeps at kappa_max). It is an accept-if-better
+// re-seed of the weakest lobe (as in split-and-merge EM, Ueda et al. 2000): at a fixed point of EM (the
+// log-likelihood gain below `tolerance`, or the budget spent) the live lobe of smallest amplitude is removed and
+// re-seeded where the rest of the mixture explains the normals worst, and EM continues; at the next fixed point
+// the trial is kept if the log-likelihood rose by at least `tolerance`, otherwise it is undone and the guard
+// stops. At most J trials per fit, and only with iterations left. The re-seed: with p(n_i) the density of the
+// remaining lobes, the candidates are the normals at weight quantiles 0, 1/16, ..., 15/16 of the normals sorted
+// by increasing p (the first is the worst-explained normal), each with kappa_s, the pooled concentration of the
+// live lobes A^-1(sum_l alpha_l |r_l| / sum_l alpha_l), or with kappa_max (a cluster of identical normals);
+// the pair that maximises the gain of a lobe of amplitude a = 1/J (the others scaled by 1 - a)
+//     G(c, kappa) = sum_i w_i log(1 - a + a g(n_i; kappa, n_c) / p(n_i))
+// is taken. So the guarded fit never ends below the unguarded one from the same start, a lobe on an isolated
+// outlier is moved to where it explains more (VmfMixture.OutlierGetsNoLobe), and a small lobe that is the
+// better use of its slot stays (VmfMixture.GuardNeverLowersTheLikelihood). The stored state is always that of
+// an M-step.
 // Deterministic: sums over normals run in fixed chunks whose partial sums are added in chunk order, so the
 // result is the same whatever the thread count, and large texels are split across threads.
 #pragma once
@@ -52,8 +54,6 @@ namespace mbk {
 inline constexpr double kVmfKappaMax = 1e6;
 // Amplitude below which a lobe is emptied.
 inline constexpr double kEmptyAmplitude = 1e-9;
-// Smallest amplitude a lobe may keep at a fixed point of EM (the collapse guard above).
-inline constexpr double kVmfMinAmplitude = 0.01;
 // EM iterations at most per fit by default.
 inline constexpr int kVmfDefaultMaxIterations = 1000;
 
@@ -73,8 +73,8 @@ struct EmOptions {
   double tolerance = 1e-6;  // on the weighted mean log-likelihood (nats per normal)
   int max_iterations = kVmfDefaultMaxIterations;
   double kappa_max = kVmfKappaMax;
-  double align = 0.0;                       // C of Eq. 7.26
-  double min_amplitude = kVmfMinAmplitude;  // the collapse guard; 0 disables it
+  double align = 0.0;  // C of Eq. 7.26
+  bool reseed = true;  // the collapse guard (false: plain EM)
 };
 
 struct EmReport {

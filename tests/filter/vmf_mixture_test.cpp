@@ -185,8 +185,10 @@ TEST(VmfMixture, StopsOnLogLikelihoodChangeAndNeverDecreases) {
     previous = r.log_likelihood;
   }
   auto loose = start, tight = start;
-  const EmReport a = fit_vmf_mixture(normals, loose, EmOptions{1.0, 1000});
-  const EmReport b = fit_vmf_mixture(normals, tight, EmOptions{1e-10, 1000});
+  EmOptions loose_options{1.0, 1000}, tight_options{1e-10, 1000};
+  loose_options.reseed = tight_options.reseed = false;  // the stopping rule of plain EM (no trial re-seeds)
+  const EmReport a = fit_vmf_mixture(normals, loose, loose_options);
+  const EmReport b = fit_vmf_mixture(normals, tight, tight_options);
   EXPECT_LE(a.iterations, 3);  // a gain below 1 nat stops it within a couple of steps
   EXPECT_TRUE(b.converged);
   EXPECT_GT(b.iterations, a.iterations);
@@ -237,13 +239,13 @@ TEST(VmfMixture, OutlierGetsNoLobe) {
   auto guarded = seeds, unguarded = seeds;
   const EmReport with = fit_vmf_mixture(normals, guarded, EmOptions{});
   EmOptions off;
-  off.min_amplitude = 0.0;
+  off.reseed = false;
   const EmReport without = fit_vmf_mixture(normals, unguarded, off);
   EXPECT_NEAR(unguarded[1].alpha, 1.0 / double(normals.size()), 1e-9);  // the collapse, reproduced
   EXPECT_EQ(unguarded[1].kappa, kVmfKappaMax);
-  EXPECT_EQ(with.reseeds, 1);
+  EXPECT_GE(with.reseeds, 1);
   for (const VmfComponent& c : guarded) {
-    EXPECT_GE(c.alpha, kVmfMinAmplitude);
+    EXPECT_GT(c.alpha, 0.2);
     EXPECT_GT(angle_deg(c.mu, outlier), 20.0);
   }
   for (const Vec3& centre : centres) {
@@ -256,8 +258,8 @@ TEST(VmfMixture, OutlierGetsNoLobe) {
 }
 
 // A trial re-seed is kept only when it ends higher: whatever the start, the guarded fit is never below the
-// unguarded one from the same start. Here a small genuine lobe (2 identical normals of 300, under the
-// minimum amplitude) is worth keeping: the re-seed is tried and undone.
+// unguarded one from the same start. Here a small genuine lobe (2 identical normals of 300, the weakest lobe)
+// is worth keeping at the cap: re-seeds are tried and the lobe survives.
 TEST(VmfMixture, GuardNeverLowersTheLikelihood) {
   std::mt19937_64 rng(4);
   std::vector<WeightedNormal> normals;
@@ -271,7 +273,7 @@ TEST(VmfMixture, GuardNeverLowersTheLikelihood) {
     if (J == 3) start[2].mu = direction(20, 90);
     auto guarded = start, unguarded = start;
     EmOptions off;
-    off.min_amplitude = 0.0;
+    off.reseed = false;
     const double with = fit_vmf_mixture(normals, guarded, EmOptions{}).log_likelihood;
     const double without = fit_vmf_mixture(normals, unguarded, off).log_likelihood;
     EXPECT_GE(with, without - 1e-9) << "J " << J;
