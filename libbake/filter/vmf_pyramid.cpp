@@ -227,16 +227,18 @@ VmfPyramid build_vmf_pyramid(const NormalMap& map, const Image* features, const 
       std::vector<WeightedNormal> normals;
       std::vector<float> y;
       gather(map, features, g, i, j, normals, y);
-      // Two starts from the child lobes, the paper's farthest-apart seeds and the mass-weighted ones; the
-      // fit of higher log-likelihood is kept (the paper's on a tie).
+      // Two starts from the child lobes, the paper's farthest-apart seeds and the mass-weighted ones, each run
+      // by plain EM to a fixed point; the better (the paper's on a tie) then continues with the collapse guard.
       const std::vector<VmfComponent> candidates = child_lobes(finer, xs, ys, J, kappa_max);
       std::vector<VmfComponent> mixture = farthest_apart_seeds(candidates, J, SeedRule::farthest);
       std::vector<VmfComponent> weighted = farthest_apart_seeds(candidates, J, SeedRule::mass_weighted);
-      const EmReport first = fit_vmf_mixture(normals, mixture, options.em);
-      const EmReport second = fit_vmf_mixture(normals, weighted, options.em);
-      reports[size_t(t)] = second.log_likelihood > first.log_likelihood ? second : first;
-      reports[size_t(t)].iterations = first.iterations + second.iterations;
+      EmOptions plain = options.em;
+      plain.reseed = false;
+      const EmReport first = fit_vmf_mixture(normals, mixture, plain);
+      const EmReport second = fit_vmf_mixture(normals, weighted, plain);
       if (second.log_likelihood > first.log_likelihood) mixture = std::move(weighted);
+      reports[size_t(t)] = fit_vmf_mixture(normals, mixture, options.em);
+      reports[size_t(t)].iterations += first.iterations + second.iterations;
       store_mixture(mixture, &level.lobes[size_t(t) * J * 4]);
       if (F) store_features(mixture, lobe_features(normals, y, F, mixture), F, &level.features[size_t(t) * J * F]);
     });

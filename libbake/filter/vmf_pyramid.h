@@ -12,7 +12,8 @@
 //   [Han07]: farthest-point seeds alone favour outlying lobes of negligible mass, the weighted ones alone
 //   miss outlying facets; neither start is better on every map). Lobes coinciding with a chosen one are never
 //   chosen twice, so a texel with fewer distinct directions than J starts (and stays) with fewer lobes, the
-//   rest empty. Each EM runs with the collapse guard of vmf_mixture.h.
+//   rest empty. Both starts run plain EM to a fixed point; the better one then continues with the collapse
+//   guard of vmf_mixture.h (trial re-seeds of the weakest lobe).
 // - Statistics per level: the mean log-likelihood per finest normal of the stored lobes (decoded from the
 //   floats, after the coherence pass), and the EM's iterations, converged fraction and re-seeds per texel.
 // - Coherence, from the top level down, texels of a level in anti-diagonal wavefronts (x + y = const, so left,
