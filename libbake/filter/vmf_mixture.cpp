@@ -13,6 +13,10 @@ namespace mbk {
 namespace {
 
 constexpr size_t kChunk = 1 << 14;
+// Terms of a log-sum-exp more than 40 nats below the largest are taken as 0 rather than passed to exp: e^-40 ~
+// 4e-18 is below half an ulp of the sum (>= 1), so the normaliser is unchanged, and a responsibility that small
+// moves the M-step sums by less than 1e-17 relative. At high kappa most lobes are that far from most normals.
+constexpr double kNegligibleLog = -40.0;
 
 // Per-lobe sums of one E-step over a chunk of normals, plus the chunk's log-likelihood.
 struct Partial {
@@ -51,7 +55,8 @@ double responsibilities(const LobeTerms& t, const Vec3& n, std::vector<double>& 
   }
   double sum = 0.0;
   for (size_t j = 0; j < J; ++j) {
-    z[j] = std::exp(z[j] - top);  // in [0, 1]; exactly 1 for the largest
+    const double d = z[j] - top;
+    z[j] = d < kNegligibleLog ? 0.0 : std::exp(d);  // in [0, 1]; exactly 1 for the largest
     sum += z[j];
   }
   for (size_t j = 0; j < J; ++j) z[j] /= sum;
@@ -66,9 +71,10 @@ double log_mixture_density(const LobeTerms& t, const Vec3& n) {
       top = std::max(top, t.log_scale[j] + t.kappa[j] * t.mu[j].dot(n));
   if (top == -std::numeric_limits<double>::infinity()) return top;
   double sum = 0.0;
-  for (size_t j = 0; j < t.kappa.size(); ++j)
-    if (t.log_scale[j] != -std::numeric_limits<double>::infinity())
-      sum += std::exp(t.log_scale[j] + t.kappa[j] * t.mu[j].dot(n) - top);
+  for (size_t j = 0; j < t.kappa.size(); ++j) {
+    const double d = t.log_scale[j] + t.kappa[j] * t.mu[j].dot(n) - top;
+    if (d >= kNegligibleLog) sum += std::exp(d);
+  }
   return top + std::log(sum);
 }
 
@@ -86,6 +92,7 @@ Partial e_step(std::span<const WeightedNormal> normals, const LobeTerms& t) {
       const WeightedNormal& wn = normals[i];
       p.log_likelihood += wn.w * responsibilities(t, wn.n, z);
       for (size_t j = 0; j < J; ++j) {
+        if (z[j] == 0.0) continue;
         p.mass[j] += wn.w * z[j];
         p.moment[j] += (wn.w * z[j]) * wn.n;
       }
