@@ -33,9 +33,9 @@ class VmfCommand : public Command {
                    "EM stops when the mean log-likelihood per normal rises by less than this")
         ->check(CLI::Range(1e-15, 1.0))
         ->default_val(1e-6);
-    app.add_option("--max-iterations", options_.bake.em.max_iterations, "EM iterations at most per texel")
+    app.add_option("--max-iterations", options_.bake.em.max_iterations, "EM iterations at most per texel and start")
         ->check(CLI::Range(1, 100000))
-        ->default_val(100);
+        ->default_val(kVmfDefaultMaxIterations);
     add_run_options(app, options_.run);
   }
 

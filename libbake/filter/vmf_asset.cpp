@@ -29,17 +29,19 @@ AssetWriter vmf_asset_writer(const LoadedNormalMap& input, const nlohmann::json*
   if (pyramid.feature_count)
     metadata["conventions"]["features"] = "per lobe alpha y, y the responsibility-weighted mean of the material image";
   nlohmann::json iterations = nlohmann::json::array(), converged = nlohmann::json::array(),
-                 ll = nlohmann::json::array(), empty = nlohmann::json::array();
+                 ll = nlohmann::json::array(), empty = nlohmann::json::array(), reseeds = nlohmann::json::array();
   for (const VmfLevel& level : pyramid.levels) {
     iterations.push_back(level.statistics.mean_iterations);
     converged.push_back(level.statistics.converged_fraction);
     ll.push_back(level.statistics.mean_log_likelihood);
     empty.push_back(level.statistics.empty_lobe_fraction);
+    reseeds.push_back(level.statistics.mean_reseeds);
   }
   metadata["statistics"] = {{"mean_em_iterations_per_level", iterations},
                             {"converged_fraction_per_level", converged},
                             {"mean_log_likelihood_per_level", ll},
-                            {"empty_lobe_fraction_per_level", empty}};
+                            {"empty_lobe_fraction_per_level", empty},
+                            {"reseeded_lobes_per_texel_per_level", reseeds}};
   AssetWriter writer("vmf", std::move(metadata));
   const uint64_t J = uint64_t(pyramid.lobes), F = uint64_t(pyramid.feature_count);
   for (size_t k = 0; k < pyramid.levels.size(); ++k) {

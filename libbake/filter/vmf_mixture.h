@@ -14,8 +14,31 @@
 // Stopping: when the weighted mean log-likelihood sum_i w_i log g(n_i) rises by less than `tolerance` (or
 // after max_iterations). EM never lowers it for C = 0; with C > 0 a fall also stops it.
 // Empty lobes: a lobe whose amplitude falls below kEmptyAmplitude is emptied (alpha = 0, r = 0) and takes no
-// further part: re-seeding it elsewhere would only duplicate a lobe when the texel has fewer distinct normals
-// than lobes (test: VmfMixture.MoreLobesThanDistinctNormals).
+// further part; a texel with fewer distinct normals than lobes keeps the extra lobes empty (test:
+// VmfMixture.MoreLobesThanDistinctNormals).
+//
+// Collapse guard (deviation [Han07], whose Alg. 7.1 has none). A lobe whose normals are one direction is a
+// fixed point of EM at the kappa cap: r_j = n_i gives kappa_max, and its responsibility for any other normal
+// at angle theta, ~exp(-kappa_max theta^2 / 2), is 0, so it never grows. Farthest-apart seeding picks outlying
+// normals (k-center is an outlier criterion) and child lobes at the cap, so coarse texels ended with lobes of
+// amplitude ~1/N on one outlying normal each. The guard is neither a minimum weight nor a kappa prior: both
+// change the objective, and on piecewise-constant and 8-bit maps a small lobe at the cap on a cluster of
+// identical normals is often the best use of its slot (a prior would also lower kappa below the cap for
+// identical normals, which VmfMixture.IdenticalNormalsCapKappa keeps at kappa_max). It is an accept-if-better
+// re-seed of the weakest lobe (as in split-and-merge EM, Ueda et al. 2000): at a fixed point of EM (the
+// log-likelihood gain below `tolerance`, or the budget spent) the live lobe of smallest amplitude is removed and
+// re-seeded where the rest of the mixture explains the normals worst, and EM continues; at the next fixed point
+// the trial is kept if the log-likelihood rose by at least `tolerance`, otherwise it is undone and the guard
+// stops. At most J trials per fit, and only with iterations left. The re-seed: with p(n_i) the density of the
+// remaining lobes, the candidates are the normals at weight quantiles 0, 1/16, ..., 15/16 of the normals sorted
+// by increasing p (the first is the worst-explained normal), each with kappa_s, the pooled concentration of the
+// live lobes A^-1(sum_l alpha_l |r_l| / sum_l alpha_l), or with kappa_max (a cluster of identical normals);
+// the pair that maximises the gain of a lobe of amplitude a = 1/J (the others scaled by 1 - a)
+//     G(c, kappa) = sum_i w_i log(1 - a + a g(n_i; kappa, n_c) / p(n_i))
+// is taken. So the guarded fit never ends below the unguarded one from the same start, a lobe on an isolated
+// outlier is moved to where it explains more (VmfMixture.OutlierGetsNoLobe), and a small lobe that is the
+// better use of its slot stays (VmfMixture.GuardNeverLowersTheLikelihood). The stored state is always that of
+// an M-step.
 // Deterministic: sums over normals run in fixed chunks whose partial sums are added in chunk order, so the
 // result is the same whatever the thread count, and large texels are split across threads.
 #pragma once
@@ -31,6 +54,8 @@ namespace mbk {
 inline constexpr double kVmfKappaMax = 1e6;
 // Amplitude below which a lobe is emptied.
 inline constexpr double kEmptyAmplitude = 1e-9;
+// EM iterations at most per fit by default.
+inline constexpr int kVmfDefaultMaxIterations = 1000;
 
 struct VmfComponent {
   double alpha = 0.0;       // amplitude; 0 = empty lobe
@@ -46,15 +71,17 @@ struct WeightedNormal {
 
 struct EmOptions {
   double tolerance = 1e-6;  // on the weighted mean log-likelihood (nats per normal)
-  int max_iterations = 100;
+  int max_iterations = kVmfDefaultMaxIterations;
   double kappa_max = kVmfKappaMax;
   double align = 0.0;  // C of Eq. 7.26
+  bool reseed = true;  // the collapse guard (false: plain EM)
 };
 
 struct EmReport {
   int iterations = 0;
   bool converged = false;
   double log_likelihood = 0.0;  // weighted mean, after the last E-step
+  int reseeds = 0;              // trial re-seeds of the collapse guard that were kept
 };
 
 // Runs EM from the given start (non-empty lobes need alpha > 0 and unit mu; their kappa is used as given).
@@ -72,7 +99,15 @@ std::vector<double> lobe_features(std::span<const WeightedNormal> normals, std::
 // first of equals), then repeatedly the one whose smallest 1 - mu.mu_s to the chosen seeds is largest, until J
 // are chosen or every remaining candidate coincides (1 - cos <= 1e-12) with a chosen one. Returns J lobes: the
 // chosen ones (their kappa and mu, amplitude 1 / count) then empty ones.
-std::vector<VmfComponent> farthest_apart_seeds(std::span<const VmfComponent> candidates, int J);
+// SeedRule::mass_weighted (deviation [Han07]) picks the largest alpha_c (1 - mu_c.mu_s) instead after the first,
+// among the candidates that do not coincide with a chosen one: pure farthest-point seeding is drawn to outlying
+// lobes of negligible mass (k-center is an outlier criterion), the weighted rule to heavy distinct ones.
+enum class SeedRule { farthest, mass_weighted };
+std::vector<VmfComponent> farthest_apart_seeds(std::span<const VmfComponent> candidates, int J,
+                                               SeedRule rule = SeedRule::farthest);
+
+// The weighted mean log-likelihood sum_i w_i log g(n_i) of a mixture (its live lobes; amplitudes as given).
+double vmf_mixture_log_likelihood(std::span<const WeightedNormal> normals, const std::vector<VmfComponent>& mixture);
 
 // Sets kappa = A^-1(|r|) (capped) and mu = r / |r| (mu = +z for r = 0).
 void set_lobe_from_resultant(VmfComponent& lobe, double kappa_max);

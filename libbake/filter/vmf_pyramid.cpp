@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <string>
 
 #include "formats/error.h"
@@ -56,15 +57,15 @@ std::vector<VmfComponent> decode_texel(const VmfLevel& level, uint32_t i, uint32
   return mixture;
 }
 
-// The seeds of a texel: the farthest-apart J among the non-empty lobes of the level k-1 texels it overlaps.
-std::vector<VmfComponent> seed_from_children(const VmfLevel& finer, const std::vector<uint32_t>& xs,
-                                             const std::vector<uint32_t>& ys, int J, double kappa_max) {
+// The non-empty lobes of the level k-1 texels a texel overlaps: the candidates its EM starts are chosen from.
+std::vector<VmfComponent> child_lobes(const VmfLevel& finer, const std::vector<uint32_t>& xs,
+                                      const std::vector<uint32_t>& ys, int J, double kappa_max) {
   std::vector<VmfComponent> candidates;
   for (uint32_t y : ys)
     for (uint32_t x : xs)
       for (const VmfComponent& c : decode_texel(finer, x, y, J, kappa_max))
         if (c.alpha > 0.0) candidates.push_back(c);
-  return farthest_apart_seeds(candidates, J);
+  return candidates;
 }
 
 // The lobe (index into mixture) each slot receives: greedy on alpha_a mu_a . t_s, largest score first; -1 leaves a
@@ -116,17 +117,18 @@ void add_targets(const VmfLevel& level, uint32_t i, uint32_t j, int J, std::vect
     if (m[size_t(s)].alpha > 0.0) t[size_t(s)] += m[size_t(s)].alpha * m[size_t(s)].mu;
 }
 
+// The EM statistics of a level (its log-likelihood is measured on the stored lobes afterwards).
 VmfLevelStatistics summarise(const std::vector<EmReport>& reports, const VmfLevel& level, int J) {
   VmfLevelStatistics s;
   if (reports.empty()) return s;
-  double iterations = 0.0, converged = 0.0, ll = 0.0;
-  for (const EmReport& r : reports) iterations += r.iterations, converged += r.converged, ll += r.log_likelihood;
+  double iterations = 0.0, converged = 0.0, reseeds = 0.0;
+  for (const EmReport& r : reports) iterations += r.iterations, converged += r.converged, reseeds += r.reseeds;
   size_t empty = 0;
   for (size_t l = 0; l < level.lobes.size(); l += 4) empty += level.lobes[l] <= 0.0f;
   const double n = double(reports.size());
   s.mean_iterations = iterations / n;
   s.converged_fraction = converged / n;
-  s.mean_log_likelihood = ll / n;
+  s.mean_reseeds = reseeds / n;
   s.empty_lobe_fraction = double(empty) / (n * J);
   return s;
 }
@@ -143,7 +145,32 @@ void for_each_texel(int64_t count, F&& body) {
   }
 }
 
+// The mean over a level's texels of sum_i w_i log g(n_i), g the stored (float) mixture decoded as a renderer
+// decodes it: the mean log-likelihood per finest normal (every texel covers the same area).
+double stored_log_likelihood(const NormalMap& map, const VmfLevel& level, int J, double kappa_max) {
+  const LevelGeometry g = geometry(map, level.width, level.height);
+  const size_t count = size_t(level.width) * level.height;
+  std::vector<double> ll(count);
+  for_each_texel(int64_t(count), [&](int64_t t) {
+    const uint32_t i = uint32_t(size_t(t) % level.width), j = uint32_t(size_t(t) / level.width);
+    std::vector<WeightedNormal> normals;
+    std::vector<float> unused;
+    gather(map, nullptr, g, i, j, normals, unused);
+    ll[size_t(t)] = vmf_mixture_log_likelihood(normals, decode_texel(level, i, j, J, kappa_max));
+  });
+  double total = 0.0;
+  for (double v : ll) total += v;
+  return total / double(count);
+}
+
 }  // namespace
+
+std::vector<WeightedNormal> vmf_texel_normals(const NormalMap& map, uint32_t w, uint32_t h, uint32_t i, uint32_t j) {
+  std::vector<WeightedNormal> normals;
+  std::vector<float> unused;
+  gather(map, nullptr, geometry(map, w, h), i, j, normals, unused);
+  return normals;
+}
 
 VmfComponent decode_lobe(const float* stored, double kappa_max) {
   const VmfLobeShape shape = vmf_lobe_from_premultiplied(stored[0], Vec3(stored[1], stored[2], stored[3]), kappa_max);
@@ -197,11 +224,21 @@ VmfPyramid build_vmf_pyramid(const NormalMap& map, const Image* features, const 
       std::vector<uint32_t> xs, ys;
       for (const MipWeight& x : cx[i]) xs.push_back(x.index);
       for (const MipWeight& y : cy[j]) ys.push_back(y.index);
-      std::vector<VmfComponent> mixture = seed_from_children(finer, xs, ys, J, kappa_max);
       std::vector<WeightedNormal> normals;
       std::vector<float> y;
       gather(map, features, g, i, j, normals, y);
+      // Two starts from the child lobes, the paper's farthest-apart seeds and the mass-weighted ones, each run
+      // by plain EM to a fixed point; the better (the paper's on a tie) then continues with the collapse guard.
+      const std::vector<VmfComponent> candidates = child_lobes(finer, xs, ys, J, kappa_max);
+      std::vector<VmfComponent> mixture = farthest_apart_seeds(candidates, J, SeedRule::farthest);
+      std::vector<VmfComponent> weighted = farthest_apart_seeds(candidates, J, SeedRule::mass_weighted);
+      EmOptions plain = options.em;
+      plain.reseed = false;
+      const EmReport first = fit_vmf_mixture(normals, mixture, plain);
+      const EmReport second = fit_vmf_mixture(normals, weighted, plain);
+      if (second.log_likelihood > first.log_likelihood) mixture = std::move(weighted);
       reports[size_t(t)] = fit_vmf_mixture(normals, mixture, options.em);
+      reports[size_t(t)].iterations += first.iterations + second.iterations;
       store_mixture(mixture, &level.lobes[size_t(t) * J * 4]);
       if (F) store_features(mixture, lobe_features(normals, y, F, mixture), F, &level.features[size_t(t) * J * F]);
     });
@@ -259,6 +296,7 @@ VmfPyramid build_vmf_pyramid(const NormalMap& map, const Image* features, const 
       }
     }
     if (refit) level.statistics = summarise(reports, level, J);
+    level.statistics.mean_log_likelihood = stored_log_likelihood(map, level, J, kappa_max);
     progress.advance();
   }
   progress.finish();

@@ -3,12 +3,19 @@
 //
 // - Level 0 has one lobe per texel: alpha = 1, r = n (|r| = 1, so kappa = kappa_max), in slot 0 before the
 //   coherence pass.
-// - Level k >= 1: EM over all the finest normals the texel covers (area weights, formats/mip_levels.h),
-//   started from the farthest-apart J lobes among the non-empty lobes of the level k-1 texels it overlaps
-//   (4J for power-of-two sizes): greedy farthest-point selection (Hochbaum-Shmoys), first the largest
+// - Level k >= 1: EM over all the finest normals the texel covers (area weights, formats/mip_levels.h), from
+//   two starts among the non-empty lobes of the level k-1 texels it overlaps (4J for power-of-two sizes):
+//   the farthest-apart J (greedy farthest-point selection, Hochbaum-Shmoys, as the paper: first the largest
 //   amplitude, then repeatedly the lobe whose smallest angular distance 1 - mu.mu_s to the chosen ones is
-//   largest; lobes coinciding with a chosen one are never chosen twice, so a texel with fewer distinct
-//   directions than J starts (and stays) with fewer lobes, the rest empty.
+//   largest) and the mass-weighted farthest-apart J (largest alpha (1 - mu.mu_s), alpha summed over
+//   coinciding child lobes; vmf_mixture.h, SeedRule). The fit of higher log-likelihood is kept (deviation
+//   [Han07]: farthest-point seeds alone favour outlying lobes of negligible mass, the weighted ones alone
+//   miss outlying facets; neither start is better on every map). Lobes coinciding with a chosen one are never
+//   chosen twice, so a texel with fewer distinct directions than J starts (and stays) with fewer lobes, the
+//   rest empty. Both starts run plain EM to a fixed point; the better one then continues with the collapse
+//   guard of vmf_mixture.h (trial re-seeds of the weakest lobe).
+// - Statistics per level: the mean log-likelihood per finest normal of the stored lobes (decoded from the
+//   floats, after the coherence pass), and the EM's iterations, converged fraction and re-seeds per texel.
 // - Coherence, from the top level down, texels of a level in anti-diagonal wavefronts (x + y = const, so left,
 //   up and up-left neighbours are done before a texel): the neighbour target of lobe slot j is
 //   t_j = sum over the parent texel (level k+1) and the left, up and up-left texels of alpha_j mu_j. Each
@@ -42,8 +49,10 @@ struct VmfBakeOptions {
 };
 
 struct VmfLevelStatistics {
-  double mean_iterations = 0.0, converged_fraction = 1.0, mean_log_likelihood = 0.0;
+  double mean_iterations = 0.0, converged_fraction = 1.0;
+  double mean_log_likelihood = 0.0;  // of the stored lobes, per finest normal (nats)
   double empty_lobe_fraction = 0.0;
+  double mean_reseeds = 0.0;  // collapsed lobes re-seeded per texel (vmf_mixture.h, the collapse guard)
 };
 
 struct VmfLevel {
@@ -65,5 +74,8 @@ VmfPyramid build_vmf_pyramid(const NormalMap& map, const Image* features, const 
 
 // Decodes a stored lobe (alpha, alpha r) into a component (kappa from |r|, capped). alpha <= 0 gives an empty one.
 VmfComponent decode_lobe(const float* stored, double kappa_max);
+
+// The finest normals texel (i, j) of a w x h level covers, with their area weights (what its EM fits).
+std::vector<WeightedNormal> vmf_texel_normals(const NormalMap& map, uint32_t w, uint32_t h, uint32_t i, uint32_t j);
 
 }  // namespace mbk

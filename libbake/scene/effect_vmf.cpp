@@ -4,7 +4,7 @@
 //   lobes           4      J, 1..16
 //   align           0      coherence weight C of Eq. (7.26), [0, 1e6]
 //   tolerance       1e-6   EM stops when the mean log-likelihood per normal rises by less, [1e-15, 1]
-//   max_iterations  100    EM iterations at most per texel, [1, 100000]
+//   max_iterations  1000   EM iterations at most per texel and start, [1, 100000]
 // The command's --material (per-lobe features, Eq. 7.25) has no option here: the evaluator shades no features.
 #include "libbake/filter/vmf_asset.h"
 #include "libbake/scene/effect_registry.h"

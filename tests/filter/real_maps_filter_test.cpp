@@ -49,8 +49,8 @@ TEST(RealMapsFiltering, ShAndVmfAssetsValidate) {
     const VmfPyramid pyramid = build_vmf_pyramid(small.map, nullptr, vmf, Progress::silent());
     for (const Finding& f : validate_asset(vmf_asset_writer(small, nullptr, pyramid, vmf).serialize()))
       ADD_FAILURE() << p << " vmf: " << f.id << ": " << f.message;
-    // EM does not always reach the default tolerance within 100 iterations on real maps (brushed streaks are
-    // elongated NDFs that isotropic lobes fit slowly), but it must stay finite.
+    // EM is slow on real maps (brushed streaks are elongated NDFs that isotropic lobes fit slowly) and may stop at
+    // max_iterations, but it must stay finite.
     for (const VmfLevel& level : pyramid.levels) EXPECT_TRUE(std::isfinite(level.statistics.mean_log_likelihood)) << p;
   }
 }

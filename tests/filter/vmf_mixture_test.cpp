@@ -185,8 +185,10 @@ TEST(VmfMixture, StopsOnLogLikelihoodChangeAndNeverDecreases) {
     previous = r.log_likelihood;
   }
   auto loose = start, tight = start;
-  const EmReport a = fit_vmf_mixture(normals, loose, EmOptions{1.0, 1000});
-  const EmReport b = fit_vmf_mixture(normals, tight, EmOptions{1e-10, 1000});
+  EmOptions loose_options{1.0, 1000}, tight_options{1e-10, 1000};
+  loose_options.reseed = tight_options.reseed = false;  // the stopping rule of plain EM (no trial re-seeds)
+  const EmReport a = fit_vmf_mixture(normals, loose, loose_options);
+  const EmReport b = fit_vmf_mixture(normals, tight, tight_options);
   EXPECT_LE(a.iterations, 3);  // a gain below 1 nat stops it within a couple of steps
   EXPECT_TRUE(b.converged);
   EXPECT_GT(b.iterations, a.iterations);
@@ -212,6 +214,71 @@ TEST(VmfMixture, FeaturesAreResponsibilityWeightedMeans) {
   EXPECT_NEAR(y[1], 0.25, 1e-12);
   EXPECT_NEAR(y[2], 0.0, 1e-12);
   EXPECT_NEAR(y[3], 0.75, 1e-12);
+}
+
+// The collapse of issue 16, in one texel: three tight clusters and one far outlying normal, started as the pyramid
+// starts a coarse texel (farthest-apart seeds among single-normal lobes at the cap), so one seed is the
+// outlier. Without the guard its lobe stays a spike of amplitude 1/N on it and two clusters share a lobe; with
+// it no lobe is spent on the outlier, each cluster has its own, and the likelihood is higher.
+TEST(VmfMixture, OutlierGetsNoLobe) {
+  std::mt19937_64 rng(11);
+  const Vec3 centres[3] = {direction(15, 0), direction(30, 120), direction(30, 240)}, outlier = direction(85, 60);
+  std::vector<WeightedNormal> normals;
+  for (const Vec3& c : centres)
+    for (int i = 0; i < 300; ++i) normals.push_back({sample_vmf(rng, c, 300), 0});
+  normals.push_back({outlier, 0});
+  for (auto& n : normals) n.w = 1.0 / double(normals.size());
+  std::vector<VmfComponent> candidates;
+  for (const auto& n : normals) {
+    VmfComponent c;
+    c.alpha = 1, c.kappa = kVmfKappaMax, c.mu = n.n, c.r = n.n;
+    candidates.push_back(c);
+  }
+  const std::vector<VmfComponent> seeds = farthest_apart_seeds(candidates, 3);
+  ASSERT_LT(angle_deg(seeds[1].mu, outlier), 1e-9);  // the outlier is a seed: the trap is set
+  auto guarded = seeds, unguarded = seeds;
+  const EmReport with = fit_vmf_mixture(normals, guarded, EmOptions{});
+  EmOptions off;
+  off.reseed = false;
+  const EmReport without = fit_vmf_mixture(normals, unguarded, off);
+  EXPECT_NEAR(unguarded[1].alpha, 1.0 / double(normals.size()), 1e-9);  // the collapse, reproduced
+  EXPECT_EQ(unguarded[1].kappa, kVmfKappaMax);
+  EXPECT_GE(with.reseeds, 1);
+  for (const VmfComponent& c : guarded) {
+    EXPECT_GT(c.alpha, 0.2);
+    EXPECT_GT(angle_deg(c.mu, outlier), 20.0);
+  }
+  for (const Vec3& centre : centres) {
+    double nearest = 180;
+    for (const VmfComponent& c : guarded) nearest = std::min(nearest, angle_deg(c.mu, centre));
+    EXPECT_LT(nearest, 1.0);
+  }
+  EXPECT_GT(with.log_likelihood, without.log_likelihood + 0.5);
+  EXPECT_NEAR(with.log_likelihood, vmf_mixture_log_likelihood(normals, guarded), 1e-6);
+}
+
+// A trial re-seed is kept only when it ends higher: whatever the start, the guarded fit is never below the
+// unguarded one from the same start. Here a small genuine lobe (2 identical normals of 300, the weakest lobe)
+// is worth keeping at the cap: re-seeds are tried and the lobe survives.
+TEST(VmfMixture, GuardNeverLowersTheLikelihood) {
+  std::mt19937_64 rng(4);
+  std::vector<WeightedNormal> normals;
+  for (int i = 0; i < 298; ++i) normals.push_back({sample_vmf(rng, direction(10, 0), 80), 0});
+  for (int i = 0; i < 2; ++i) normals.push_back({direction(50, 200), 0});
+  for (auto& n : normals) n.w = 1.0 / double(normals.size());
+  for (int J : {2, 3}) {
+    std::vector<VmfComponent> start(static_cast<size_t>(J));
+    for (int j = 0; j < J; ++j) start[size_t(j)].alpha = 1.0 / J, start[size_t(j)].kappa = 50;
+    start[0].mu = direction(10, 0), start[1].mu = direction(50, 200);
+    if (J == 3) start[2].mu = direction(20, 90);
+    auto guarded = start, unguarded = start;
+    EmOptions off;
+    off.reseed = false;
+    const double with = fit_vmf_mixture(normals, guarded, EmOptions{}).log_likelihood;
+    const double without = fit_vmf_mixture(normals, unguarded, off).log_likelihood;
+    EXPECT_GE(with, without - 1e-9) << "J " << J;
+    EXPECT_NEAR(guarded[1].alpha, 2.0 / 300, 1e-6) << "J " << J;  // the genuine small lobe is kept
+  }
 }
 
 // Eq. (7.26): with C > 0 the lobe direction moves from r / |r| towards the neighbour target, by the formula.
