@@ -12,6 +12,7 @@
 #include "libbake/filter/vmf_pyramid.h"
 #include "libbake/filter/vmf_reference_fit.h"
 #include "libbake/gen/generator.h"
+#include "tests/filter/vmf_sampling.h"
 
 namespace mbk {
 namespace {
@@ -21,16 +22,7 @@ Vec3 direction(double theta_deg, double phi_deg) {
   return Vec3(std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t));
 }
 
-// Wood (1994), as in vmf_mixture_test.cpp.
-Vec3 sample_vmf(std::mt19937_64& rng, const Vec3& mu, double kappa) {
-  std::uniform_real_distribution<double> u01(0.0, 1.0);
-  const double u = u01(rng), phi = 2 * std::numbers::pi * u01(rng);
-  const double w = 1.0 + std::log(u + (1.0 - u) * std::exp(-2.0 * kappa)) / kappa;
-  const double s = std::sqrt(std::max(0.0, 1.0 - w * w));
-  const Vec3 a = std::abs(mu.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
-  const Vec3 t = mu.cross(a).normalized(), b = mu.cross(t);
-  return (w * mu + s * std::cos(phi) * t + s * std::sin(phi) * b).normalized();
-}
+using test::sample_vmf;
 
 TEST(VmfReferenceFit, ReachesTheTrueParametersLikelihood) {
   std::mt19937_64 rng(3);

@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 
 #include "libbake/core/hash.h"
 #include "libbake/gen/generator.h"
@@ -19,6 +18,7 @@
 #include "libbake/glint/lut_asset.h"
 #include "libbake/glint/target_patch_grid.h"
 #include "tests/glint/atom_maps.h"
+#include "tests/real_normal_maps.h"
 
 namespace mbk {
 namespace {
@@ -133,16 +133,10 @@ TEST(BlendedField, MatchesTheExactTransformAtEveryTableSize_AtomMaps) {
 }
 
 TEST(BlendedField, MatchesTheExactTransformAtEveryTableSize_RealMaps) {
-  const std::filesystem::path dir = MICROBAKE_REAL_DATA_DIR;
-  if (!std::filesystem::is_directory(dir)) GTEST_SKIP() << "no real maps in " << dir;
-  int maps = 0;
-  for (const auto& e : std::filesystem::directory_iterator(dir)) {
-    if (e.path().extension() != ".png" || e.path().stem().string().ends_with("_height")) continue;
-    const LoadedNormalMap in = load_normal_map(e.path(), {YConvention::minus_y, InvalidTexelPolicy::repair});
-    expect_same_field(in.map, e.path().filename().string(), {128, 4096});
-    ++maps;
-  }
-  if (maps == 0) GTEST_SKIP() << "no normal maps in " << dir;
+  const int maps = test::for_each_real_normal_map([](const NormalMap& map, const std::string& name) {
+    expect_same_field(map, name, {128, 4096});
+  });
+  if (maps == 0) GTEST_SKIP() << "no real normal maps in " << MICROBAKE_REAL_DATA_DIR;
 }
 
 TEST(BlendedField, ScratchesKeepTheirFlatGround) {

@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
 #include <limits>
 
 #include "formats/lut_layout.h"
@@ -17,6 +16,7 @@
 #include "libbake/glint/standardization_sampling.h"
 #include "libbake/image/normal_map.h"
 #include "tests/glint/atom_maps.h"
+#include "tests/real_normal_maps.h"
 
 namespace mbk {
 namespace {
@@ -130,17 +130,11 @@ TEST(StandardizationLut, KnotsWithinOneStepOfTheExactTransform_AtomMaps) {
 }
 
 TEST(StandardizationLut, KnotsWithinOneStepOfTheExactTransform_RealMaps) {
-  const std::filesystem::path dir = MICROBAKE_REAL_DATA_DIR;
-  if (!std::filesystem::is_directory(dir)) GTEST_SKIP() << "no real maps in " << dir;
-  int maps = 0;
-  for (const auto& e : std::filesystem::directory_iterator(dir)) {
-    if (e.path().extension() != ".png" || e.path().stem().string().ends_with("_height")) continue;
-    const LoadedNormalMap in = load_normal_map(e.path(), {YConvention::minus_y, InvalidTexelPolicy::repair});
+  const int maps = test::for_each_real_normal_map([](const NormalMap& map, const std::string& name) {
     for (uint32_t size : {128u, kLutDefaultSize})
-      for (int c = 0; c < 2; ++c) expect_exact_knot_tables(channel(in.map, c), size, e.path().filename().string());
-    ++maps;
-  }
-  if (maps == 0) GTEST_SKIP() << "no normal maps in " << dir;
+      for (int c = 0; c < 2; ++c) expect_exact_knot_tables(channel(map, c), size, name);
+  });
+  if (maps == 0) GTEST_SKIP() << "no real normal maps in " << MICROBAKE_REAL_DATA_DIR;
 }
 
 TEST(StandardizationLut, AtomIsExactWhateverTheSize) {
