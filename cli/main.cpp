@@ -1,5 +1,5 @@
 // microbake's entry point: the only table of commands, and the only place where errors become exit codes
-// (DESIGN.md, "The command line"). Every error is printed as one line `microbake: error: <what> (<where>)`.
+// (docs/ARCHITECTURE.md, "Errors"). Every error is printed as one line `microbake: error: <what> (<where>)`.
 #include <cstdio>
 #include <iostream>
 #include <vector>
@@ -8,6 +8,7 @@
 
 #include "cli/command.h"
 #include "formats/error.h"
+#include "formats/version.h"
 
 namespace mbk::cli {
 namespace {
@@ -55,7 +56,7 @@ int main_impl(int argc, char** argv) {
       "Exit codes: 0 success, 1 bad command line, 2 I/O failure, 3 invalid input, 4 runtime failure,\n"
       "5 unsupported, 6 difference above threshold (compare).",
       "microbake"};
-  app.set_version_flag("--version", std::string("microbake ") + MICROBAKE_VERSION);
+  app.set_version_flag("--version", "microbake " + microbake_version());
   app.require_subcommand(1);
   auto table = command_table();
   std::vector<std::unique_ptr<Command>> commands;

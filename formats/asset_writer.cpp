@@ -2,6 +2,7 @@
 #include "formats/asset_writer.h"
 
 #include "formats/asset_kind.h"
+#include "formats/version.h"
 #include "formats/atomic_file.h"
 #include "formats/byte_io.h"
 
@@ -16,7 +17,7 @@ AssetWriter::AssetWriter(std::string_view kind_name, nlohmann::json metadata) : 
     if (!metadata_.contains(key))
       throw Error(ExitCode::runtime_failure, std::string("internal: metadata lacks '") + key + "'");
   metadata_["kind"] = std::string(kind_name);
-  metadata_["producer"] = {{"name", "microbake"}, {"version", MICROBAKE_VERSION}};
+  metadata_["producer"] = {{"name", "microbake"}, {"version", microbake_version()}};
 }
 
 void AssetWriter::add_bytes(const std::string& name, ElementType type, std::vector<uint64_t> shape,

@@ -1,4 +1,4 @@
-// The one error channel of microbake: an error carries its exit code (DESIGN.md's table) and where it
+// The one error channel of microbake: an error carries its exit code (docs/ARCHITECTURE.md, "Errors") and where it
 // happened (a file, a pixel, a section, a JSON path). Helpers throw; only cli/main.cpp turns errors into
 // exit codes and the one-line message `microbake: error: <what> (<where>)`.
 #pragma once

@@ -1,6 +1,6 @@
 // Deterministic parallel loops over OpenMP. Work is split by index, every index computes its own result
-// and writes only its own slots, so outputs are byte-identical whatever the thread count (DESIGN.md:
-// "the same inputs and options give byte-identical outputs whatever --threads is"). Reductions that must
+// and writes only its own slots, so outputs are byte-identical whatever the thread count (docs/ARCHITECTURE.md,
+// "Determinism": "the same inputs and options give byte-identical outputs whatever --threads is"). Reductions that must
 // be deterministic are done afterwards, serially, in index order.
 #pragma once
 

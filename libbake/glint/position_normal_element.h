@@ -3,7 +3,7 @@
 //
 // Units: positions u in target texels (target_patch_grid.h), normals s in normal components (n_x, n_y).
 // Footprint: G_P(u) = exp(-|u - c|^2 / (2 sigma_p^2)) (isotropic; truncated by the P-NDF, not here).
-// Element i ([Yan16]; DESIGN.md): centre u_i, normal n_i, Jacobian J_i (dn/du),
+// Element i ([Yan16]; docs/ARCHITECTURE.md): centre u_i, normal n_i, Jacobian J_i (dn/du),
 //   G_i(u, s) = exp(-|u - u_i|^2 / (2 sigma_h^2)) exp(-|s - n_i - J_i (u - u_i)|^2 / (2 sigma_r^2)),
 // sigma_h = kGlintElementSigmaTexels, sigma_r the intrinsic roughness. With d = u_i - c, r = s - n_i and
 // delta = u - u_i, the exponent is -(delta^T A delta - 2 b^T delta + e) / 2 with

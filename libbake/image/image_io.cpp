@@ -16,7 +16,7 @@
 namespace mbk {
 namespace {
 
-// OpenImageIO's messages may span lines; errors are one line (DESIGN.md).
+// OpenImageIO's messages may span lines; errors are one line (docs/ARCHITECTURE.md, "Errors").
 std::string one_line(std::string text) {
   std::replace(text.begin(), text.end(), '\n', ' ');
   while (!text.empty() && text.back() == ' ') text.pop_back();

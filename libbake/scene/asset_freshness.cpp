@@ -2,6 +2,7 @@
 #include "libbake/scene/asset_freshness.h"
 
 #include "formats/asset.h"
+#include "formats/version.h"
 #include "formats/error.h"
 
 namespace mbk {
@@ -28,8 +29,8 @@ AssetFreshness check_asset_freshness(const PlannedAsset& planned, const std::fil
 
   // A new microbake may bake differently: rebuild what an older (or newer) version baked.
   const std::string baked_by = asset->metadata()["producer"]["version"].get<std::string>();
-  if (baked_by != MICROBAKE_VERSION)
-    return stale("baked by microbake " + baked_by + ", this is " + std::string(MICROBAKE_VERSION));
+  if (baked_by != microbake_version())
+    return stale("baked by microbake " + baked_by + ", this is " + microbake_version());
 
   const nlohmann::json& inputs = asset->metadata()["inputs"];
   if (!inputs.is_array() || inputs.size() != recipe.inputs.size())

@@ -1,7 +1,7 @@
 // Strict reading of JSON (scene files, colour-map stops, crease curves): parse_json_strict refuses an object
 // that names a key twice (the JSON parser would keep the last one silently); every key of an object must be read,
 // and a key nobody read is an error naming its JSON path ("materials.brick.rougness"), so a typo is never
-// silently ignored (DESIGN.md, "Unknown options and unknown JSON keys are errors"). Wrong types and values
+// silently ignored (docs/ARCHITECTURE.md, "Strict input"). Wrong types and values
 // out of range are errors naming their path too. Errors are Error(invalid_input, what, json_path); callers
 // that know the file prefix the path with it.
 #pragma once

@@ -1,6 +1,6 @@
 // Exact k-nearest neighbours of neighbourhood vectors with FLANN (kept in one .cpp: its headers compile slowly).
-// Uses the exact, deterministic KDTreeSingleIndex (DESIGN.md: FLANN's randomized trees seed themselves from
-// std::random_device), so an analysis gives the same candidates on every run and thread count.
+// Uses the exact, deterministic KDTreeSingleIndex (docs/ARCHITECTURE.md, "Determinism": FLANN's randomized trees seed
+// themselves from std::random_device), so an analysis gives the same candidates on every run and thread count.
 #pragma once
 
 #include <cstdint>
