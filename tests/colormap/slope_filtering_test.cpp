@@ -124,7 +124,9 @@ TEST(SlopeFiltering, FarBackFacingMeanStaysFinite_SeriesBranch) {
     ASSERT_TRUE(v.gaussian.mean.allFinite() && v.gaussian.covariance.allFinite()) << tilt;
     EXPECT_GE(v.gaussian.covariance(0, 0), 0.0);
     EXPECT_LT(v.gaussian.mean.x(), 0.1763 + 1e-9);  // visible facets are those facing the viewer
-    if (tilt > 5.0) EXPECT_LT(std::abs(v.gaussian.mean.x() - previous_mean), 0.05);
+    if (tilt > 5.0) {
+      EXPECT_LT(std::abs(v.gaussian.mean.x() - previous_mean), 0.05);
+    }
     previous_mean = v.gaussian.mean.x();
   }
   // Near the branch point, both forms and the brute force agree.

@@ -22,7 +22,9 @@ TEST(GaussLegendre, ExactForPolynomialsOfDegree2nMinus1) {
       EXPECT_NEAR(sum, exact, 1e-13) << n << " points, degree " << degree;
     }
     for (size_t i = 0; i < nodes.size(); ++i) {
-      if (i > 0) EXPECT_LT(nodes[i - 1].x, nodes[i].x);
+      if (i > 0) {
+        EXPECT_LT(nodes[i - 1].x, nodes[i].x);
+      }
       EXPECT_NEAR(nodes[i].x, -nodes[nodes.size() - 1 - i].x, 1e-15);
       EXPECT_GT(nodes[i].w, 0.0);
     }

@@ -140,7 +140,9 @@ TEST(GlintPndf, ElementIntegralStaysFiniteForHugeJacobians) {
     e.jacobian << -0.18, -0.47, -1.45 * t, -0.498 * t;
     const double k = element_footprint_integral(e, fp, 0.01, s);
     ASSERT_TRUE(std::isfinite(k) && k > 0.0) << t << ": " << k;
-    if (previous > 0.0) EXPECT_NEAR(k * t, previous, (t < 1e13 ? 1e-5 : 1e-2) * previous) << t;
+    if (previous > 0.0) {
+      EXPECT_NEAR(k * t, previous, (t < 1e13 ? 1e-5 : 1e-2) * previous) << t;
+    }
     previous = k * t;
   }
 }
