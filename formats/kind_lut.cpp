@@ -44,19 +44,15 @@ void check_channel(const std::vector<float>& rows, uint32_t channel, std::vector
 }
 
 void check_lut(const Asset& a, std::vector<Finding>& out) {
-  const nlohmann::json& m = a.metadata();
-  const nlohmann::json params = m.contains("parameters") ? m["parameters"] : nlohmann::json();
-  const nlohmann::json size_json = params.is_object() ? params.value("size", nlohmann::json()) : nlohmann::json();
-  if (!size_json.is_number_unsigned() || size_json.get<uint64_t>() < kLutMinSize ||
-      size_json.get<uint64_t>() > kLutMaxSize) {
+  const std::optional<uint32_t> parameter = lut_size_parameter(a.metadata());
+  if (!parameter) {
     out.push_back(make_finding(msg::lut_bad_parameters, "parameters.size must be an integer in 2..65536",
                                {{"key", "parameters.size"}}));
     return;
   }
-  const uint32_t size = size_json.get<uint32_t>();
+  const uint32_t size = *parameter;
   for (std::string_view section : kLutKnotSections) {
-    const SectionInfo& s = a.section(std::string(section));
-    if (s.shape.size() != 2 || s.shape[1] != kLutKnotColumns || s.shape[0] < 1 || s.shape[0] > lut_max_knots(size)) {
+    if (!lut_knot_shape_ok(a.section(std::string(section)).shape, size)) {
       out.push_back(make_finding(msg::lut_section_shape,
                                  "'" + std::string(section) + "' should be f32 [M, 2] with 1 <= M <= " +
                                      std::to_string(lut_max_knots(size)) + " (3 x size)",

@@ -17,7 +17,11 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 namespace mbk {
 
@@ -33,6 +37,11 @@ inline constexpr uint32_t kLutKnotColumns = 2;  // (x, z)
 
 // The most knots a channel of a table of `size` may have: two uniform grids and at most size heavy values.
 inline constexpr uint64_t lut_max_knots(uint32_t size) { return 3 * uint64_t(size); }
+
+// parameters.size of a lut asset's metadata when it is an unsigned integer in 2..65536; nullopt otherwise.
+std::optional<uint32_t> lut_size_parameter(const nlohmann::json& metadata);
+// Whether a knot section of an asset with parameter `size` has the shape [M, 2], 1 <= M <= lut_max_knots(size).
+bool lut_knot_shape_ok(const std::vector<uint64_t>& shape, uint32_t size);
 
 // Sample j of the uniform grid of `size` points over [lo, hi]: lo + j (hi - lo) / (size - 1), exactly hi at
 // j = size - 1.

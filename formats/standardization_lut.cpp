@@ -12,16 +12,14 @@ StandardizationLut read_standardization_lut(const Asset& asset) {
   if (asset.kind().id != kLutKindId)
     throw Error(ExitCode::invalid_input, "expected a lut asset, found kind '" + std::string(asset.kind().name) + "'",
                 asset.where());
-  const nlohmann::json& parameters = asset.metadata().contains("parameters") ? asset.metadata()["parameters"] : nullptr;
-  const nlohmann::json size = parameters.is_object() ? parameters.value("size", nlohmann::json()) : nullptr;
-  if (!size.is_number_unsigned() || size.get<uint64_t>() < kLutMinSize || size.get<uint64_t>() > kLutMaxSize)
-    throw Error(ExitCode::invalid_input, "lut parameters.size must be an integer in 2..65536", asset.where());
+  const std::optional<uint32_t> size = lut_size_parameter(asset.metadata());
+  if (!size) throw Error(ExitCode::invalid_input, "lut parameters.size must be an integer in 2..65536", asset.where());
   StandardizationLut lut;
-  lut.size = size.get<uint32_t>();
+  lut.size = *size;
   for (uint32_t c = 0; c < kLutChannels; ++c) {
     const std::string name(kLutKnotSections[c]);
     const SectionInfo& s = asset.section(name);
-    if (s.shape.size() != 2 || s.shape[1] != kLutKnotColumns || s.shape[0] < 1 || s.shape[0] > lut_max_knots(lut.size))
+    if (!lut_knot_shape_ok(s.shape, lut.size))
       throw Error(ExitCode::invalid_input,
                   "lut section '" + name + "' should have shape [M, 2] with 1 <= M <= 3 x size", asset.where());
     const std::vector<float> rows = asset.read<float>(name);

@@ -37,7 +37,7 @@ struct BakedLut {
   std::array<LutChannelStatistics, 2> statistics;  // n_x, n_y
 };
 
-// Standardizes both channels of `map` and samples them at `size` (2..65536) samples per table. Deterministic
+// Standardizes both channels of `map` into knots at grid resolution `size` (2..65536). Deterministic
 // whatever the thread count. Throws Error(bad_command_line) for a size out of range.
 BakedLut bake_standardization_lut(const NormalMap& map, uint32_t size, Progress& progress);
 
