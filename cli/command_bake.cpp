@@ -66,7 +66,7 @@ class BakeCommand : public Command {
       std::string action = "skipped";
       if (fresh.state != AssetState::up_to_date) {
         // The bar counts assets; a long bake inside one asset stays quiet.
-        OutputOption{file.string()}.write_bytes(a.recipe.bake(Progress::silent()).serialize());
+        OutputOption{file.string()}.write_asset(a.recipe.bake(Progress::silent()));
         action = fresh.state == AssetState::missing ? "baked" : "rebuilt";
       }
       progress.advance();

@@ -67,7 +67,7 @@ class ColormapCommand : public Command {
     const BakedColormap baked = bake_colormap_table(source.curve, options_.table, progress);
     const AssetWriter writer = colormap_asset_writer(baked, source.record, source.encoding);
     const double bake_seconds = timer.lap();
-    options_.output.write_bytes(writer.serialize());
+    options_.output.write_asset(writer);
     const double write_seconds = timer.lap();
     if (!options_.run.quiet) {
       const ColormapTable& t = baked.table;

@@ -47,7 +47,7 @@ class CreaseCommand : public Command {
     const double load_seconds = timer.lap();
     const BakedCrease baked = bake_crease(input.map, curves, options_.bake, progress);
     const double bake_seconds = timer.lap();
-    options_.output.write_bytes(crease_asset_writer(baked, options_.bake, input.record, record).serialize());
+    options_.output.write_asset(crease_asset_writer(baked, options_.bake, input.record, record));
     const double write_seconds = timer.lap();
     if (!options_.run.quiet) {
       const SimplifyStatistics& s = baked.simplify;

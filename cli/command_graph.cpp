@@ -50,7 +50,7 @@ class GraphCommand : public Command {
     const GraphAnalysis analysis = analyse_graph(graph, exemplars.images, options_.analysis, progress);
     const AssetWriter writer = graph_asset_writer(graph, analysis, options_.analysis, graph_record, exemplars.records);
     const double bake_seconds = timer.lap();
-    options_.output.write_bytes(writer.serialize());
+    options_.output.write_asset(writer);
     const double write_seconds = timer.lap();
     if (!options_.run.quiet)
       std::cout << std::fixed << std::setprecision(3) << "graph: wrote " << options_.output.path << " ("

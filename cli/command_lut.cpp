@@ -36,7 +36,7 @@ class LutCommand : public Command {
     const BakedLut lut = bake_standardization_lut(input.map, options_.size, progress);
     const AssetWriter writer = lut_asset_writer(lut, input.record);
     const double bake_seconds = timer.lap();
-    options_.output.write_bytes(writer.serialize());
+    options_.output.write_asset(writer);
     const double write_seconds = timer.lap();
     if (!options_.run.quiet) {
       const LutChannelStatistics &x = lut.statistics[0], &y = lut.statistics[1];

@@ -28,7 +28,7 @@ class MipCommand : public Command {
     progress.advance();
     const AssetWriter writer = bake_mip_asset(input);
     progress.advance();
-    options_.output.write_bytes(writer.serialize());
+    options_.output.write_asset(writer);
     progress.finish();
     if (!options_.run.quiet) {
       std::cout << "mip: wrote " << options_.output.path << " (" << input.map.width << "x" << input.map.height << ", "

@@ -36,7 +36,7 @@ class MomentsCommand : public Command {
     const MomentPyramid pyramid = build_moment_pyramid(driver);
     const AssetWriter writer = moments_asset_writer(pyramid, driver);
     const double bake_seconds = timer.lap();
-    options_.output.write_bytes(writer.serialize());
+    options_.output.write_asset(writer);
     const double write_seconds = timer.lap();
     if (!options_.run.quiet)
       std::cout << std::setprecision(4) << "moments: wrote " << options_.output.path << " (" << driver.width << "x"

@@ -59,7 +59,7 @@ class RmqCommand : public Command {
     const double load_seconds = timer.lap();
     const AssetWriter writer = bake_rmq_asset(input, patch, options_.bits, progress);
     const double bake_seconds = timer.lap();
-    options_.output.write_bytes(writer.serialize());
+    options_.output.write_asset(writer);
     const double write_seconds = timer.lap();
     if (!options_.run.quiet) {
       const RmqLayout layout{w, h, patch, rmq_levels_for_patch(patch), options_.bits};

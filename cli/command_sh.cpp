@@ -41,17 +41,17 @@ class ShCommand : public Command {
     const LoadedNormalMap input = load_normal_map(options_.input.path, options_.input.load_options());
     const double load_seconds = timer.lap();
     const ShBakeOptions bake{options_.order, parse_precision(options_.precision), parse_window(options_.window)};
-    const ShPyramid pyramid = build_sh_pyramid(input.map, bake.order, progress);
-    const AssetWriter writer = sh_asset_writer(input, pyramid, bake);
+    ShPyramid pyramid = build_sh_pyramid(input.map, bake.order, progress);
+    const size_t levels = pyramid.levels.size() + 1;
+    const AssetWriter writer = sh_asset_writer(input, std::move(pyramid), bake);
     const double bake_seconds = timer.lap();
-    const std::vector<uint8_t> bytes = writer.serialize();
-    options_.output.write_bytes(bytes);
+    options_.output.write_asset(writer);
     const double write_seconds = timer.lap();
     if (!options_.run.quiet) {
       std::cout << std::setprecision(3) << "sh: wrote " << options_.output.path << " (" << input.map.width << "x"
-                << input.map.height << ", " << pyramid.levels.size() + 1 << " levels, order " << bake.order << ", "
-                << sh_count(bake.order) << " " << options_.precision << " coefficients per texel, window "
-                << options_.window << ", " << bytes.size() << " bytes";
+                << input.map.height << ", " << levels << " levels, order " << bake.order << ", " << sh_count(bake.order)
+                << " " << options_.precision << " coefficients per texel, window " << options_.window << ", "
+                << writer.file_size() << " bytes";
       print_bake_times(std::cout, input.record, load_seconds, bake_seconds, write_seconds);
     }
     return 0;

@@ -68,8 +68,7 @@ class VmfCommand : public Command {
     const VmfPyramid pyramid = build_vmf_pyramid(input.map, material ? &*material : nullptr, options_.bake, progress);
     const AssetWriter writer = vmf_asset_writer(input, material ? &material_record : nullptr, pyramid, options_.bake);
     const double bake_seconds = timer.lap();
-    const std::vector<uint8_t> bytes = writer.serialize();
-    options_.output.write_bytes(bytes);
+    options_.output.write_asset(writer);
     const double write_seconds = timer.lap();
     if (!options_.run.quiet) {
       double iterations = 0.0;
@@ -80,7 +79,7 @@ class VmfCommand : public Command {
       if (pyramid.feature_count) std::cout << ", " << pyramid.feature_count << " feature channels";
       if (pyramid.levels.size() > 1)
         std::cout << ", mean EM iterations " << iterations / double(pyramid.levels.size() - 1);
-      std::cout << ", " << bytes.size() << " bytes";
+      std::cout << ", " << writer.file_size() << " bytes";
       print_bake_times(std::cout, input.record, load_seconds, bake_seconds, write_seconds);
     }
     return 0;

@@ -63,11 +63,7 @@ void OutputOption::require_extension(const std::string& extension) const {
     throw Error(ExitCode::bad_command_line, "the output must end in " + extension, path);
 }
 
-void OutputOption::write_bytes(const std::vector<uint8_t>& bytes) const {
-  AtomicFile file(path);
-  file.write_all(bytes);
-  file.commit();
-}
+void OutputOption::write_asset(const AssetWriter& asset) const { asset.write(path); }
 
 void add_output_option(CLI::App& app, OutputOption& output, const std::string& what) {
   app.add_option("-o,--output", output.path, "Write the " + what + " here (written whole or not at all)")->required();

@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "formats/asset_writer.h"
 #include "libbake/core/progress.h"
 #include "libbake/image/normal_map.h"
 
@@ -36,7 +37,8 @@ struct OutputOption {
   // Calls produce(temporary) to write the output to a temporary path beside the destination (same
   // extension), then flushes and renames it into place. On any exception the temporary is removed.
   void write_with(const std::function<void(const std::filesystem::path& temporary)>& produce) const;
-  void write_bytes(const std::vector<uint8_t>& bytes) const;
+  // Writes the asset atomically, streamed section by section.
+  void write_asset(const AssetWriter& asset) const;
   // Fails early (Error io_failure) when the output cannot be written: its folder is missing or the path is a
   // folder. Commands call it from check(), before any long work.
   void check_writable() const;

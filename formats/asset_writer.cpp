@@ -1,6 +1,8 @@
 // Serializes the .mbk container, version 1.0 (formats/SPEC.md).
 #include "formats/asset_writer.h"
 
+#include <array>
+
 #include "formats/asset_kind.h"
 #include "formats/version.h"
 #include "formats/atomic_file.h"
@@ -22,6 +24,13 @@ AssetWriter::AssetWriter(std::string_view kind_name, nlohmann::json metadata) : 
 
 void AssetWriter::add_bytes(const std::string& name, ElementType type, std::vector<uint64_t> shape,
                             std::span<const uint8_t> bytes) {
+  auto copy = std::make_shared<const std::vector<uint8_t>>(bytes.begin(), bytes.end());
+  const std::span<const uint8_t> owned(*copy);
+  add_section(name, type, std::move(shape), owned, std::move(copy));
+}
+
+void AssetWriter::add_section(const std::string& name, ElementType type, std::vector<uint64_t> shape,
+                              std::span<const uint8_t> bytes, std::shared_ptr<const void> owner) {
   if (!is_valid_section_name(name))
     throw Error(ExitCode::runtime_failure, "internal: invalid section name '" + name + "'");
   for (const auto& s : sections_)
@@ -40,11 +49,13 @@ void AssetWriter::add_bytes(const std::string& name, ElementType type, std::vect
   s.info.shape = std::move(shape);
   s.info.byte_length = bytes.size();
   s.info.checksum = checksum_of(bytes.data(), bytes.size());
-  s.bytes.assign(bytes.begin(), bytes.end());
+  s.bytes = bytes;
+  s.owner = std::move(owner);
   sections_.push_back(std::move(s));
 }
 
-std::vector<uint8_t> AssetWriter::serialize() const {
+AssetWriter::Layout AssetWriter::layout() const {
+  static const std::array<uint8_t, kSectionAlignment> zeros{};
   const std::string meta = metadata_.dump();  // keys sorted (std::map): byte-identical for identical content
   const uint64_t meta_offset = kHeaderSize;
   const uint64_t table_offset = align_up(meta_offset + meta.size(), kSectionAlignment);
@@ -55,22 +66,22 @@ std::vector<uint8_t> AssetWriter::serialize() const {
     offsets.push_back(cursor);
     cursor = align_up(cursor + s.bytes.size(), kSectionAlignment);
   }
+  Layout l;
   // The file ends right after the last section's data (no trailing padding).
-  uint64_t file_size = sections_.empty() ? table_offset + table_size : offsets.back() + sections_.back().bytes.size();
-
-  std::vector<uint8_t> out(file_size, 0);
+  l.file_size = sections_.empty() ? table_offset + table_size : offsets.back() + sections_.back().bytes.size();
+  l.head.assign(sections_.empty() ? l.file_size : offsets.front(), 0);
+  std::vector<uint8_t>& out = l.head;
   std::copy(kMagic.begin(), kMagic.end(), out.begin());
   store_le<uint16_t>(&out[8], kFormatMajor);
   store_le<uint16_t>(&out[10], kFormatMinor);
   store_le<uint32_t>(&out[12], kind_id_);
-  store_le<uint64_t>(&out[16], file_size);
+  store_le<uint64_t>(&out[16], l.file_size);
   store_le<uint64_t>(&out[24], meta_offset);
   store_le<uint64_t>(&out[32], meta.size());
   store_le<uint64_t>(&out[40], table_offset);
   store_le<uint32_t>(&out[48], static_cast<uint32_t>(sections_.size()));
   store_le<uint32_t>(&out[52], kSectionEntrySize);
   std::copy(meta.begin(), meta.end(), out.begin() + meta_offset);
-
   for (size_t i = 0; i < sections_.size(); ++i) {
     const SectionInfo& info = sections_[i].info;
     uint8_t* e = &out[table_offset + i * kSectionEntrySize];
@@ -81,16 +92,30 @@ std::vector<uint8_t> AssetWriter::serialize() const {
     store_le<uint64_t>(e + 88, offsets[i]);
     store_le<uint64_t>(e + 96, info.byte_length);
     store_le<uint64_t>(e + 104, info.checksum);
-    std::copy(sections_[i].bytes.begin(), sections_[i].bytes.end(), out.begin() + offsets[i]);
   }
-
   store_le<uint64_t>(&out[56], header_checksum(out.data(), meta_offset, meta.size(), table_offset, table_size));
+  l.pieces.push_back(l.head);
+  for (size_t i = 0; i < sections_.size(); ++i) {
+    l.pieces.push_back(sections_[i].bytes);
+    const uint64_t end = offsets[i] + sections_[i].bytes.size();
+    if (i + 1 < sections_.size()) l.pieces.push_back(std::span<const uint8_t>(zeros.data(), offsets[i + 1] - end));
+  }
+  return l;
+}
+
+std::vector<uint8_t> AssetWriter::serialize() const {
+  const Layout l = layout();
+  std::vector<uint8_t> out;
+  out.reserve(l.file_size);
+  for (std::span<const uint8_t> piece : l.pieces) out.insert(out.end(), piece.begin(), piece.end());
   return out;
 }
 
+uint64_t AssetWriter::file_size() const { return layout().file_size; }
+
 void AssetWriter::write(const std::filesystem::path& path) const {
   AtomicFile file(path);
-  file.write_all(serialize());
+  file.write_all(layout().pieces);
   file.commit();
 }
 

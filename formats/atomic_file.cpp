@@ -48,10 +48,13 @@ AtomicFile::~AtomicFile() {
   }
 }
 
-void AtomicFile::write_all(std::span<const uint8_t> bytes) {
+void AtomicFile::write_all(std::span<const uint8_t> bytes) { write_all(std::vector{bytes}); }
+
+void AtomicFile::write_all(const std::vector<std::span<const uint8_t>>& pieces) {
   std::ofstream out(temporary_, std::ios::binary | std::ios::trunc);
   if (!out) throw Error(ExitCode::io_failure, "cannot create output file", destination_.string());
-  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  for (std::span<const uint8_t> piece : pieces)
+    out.write(reinterpret_cast<const char*>(piece.data()), static_cast<std::streamsize>(piece.size()));
   out.close();
   if (!out) throw Error(ExitCode::io_failure, "cannot write output file (disk full?)", destination_.string());
 }

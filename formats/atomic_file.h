@@ -22,6 +22,8 @@ class AtomicFile {
 
   // Writes bytes to the temporary path (replacing its content). Throws Error(io_failure).
   void write_all(std::span<const uint8_t> bytes);
+  // Writes the pieces one after the other to the temporary path (replacing its content). Throws Error(io_failure).
+  void write_all(const std::vector<std::span<const uint8_t>>& pieces);
   // fsyncs the temporary and renames it onto the destination. Throws Error(io_failure).
   void commit();
 

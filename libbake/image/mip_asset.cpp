@@ -28,7 +28,7 @@ nlohmann::json mip_statistics(const NormalPyramid& pyramid) {
 }  // namespace
 
 AssetWriter bake_mip_asset(const LoadedNormalMap& input) {
-  const NormalPyramid pyramid = build_normal_pyramid(input.map);
+  NormalPyramid pyramid = build_normal_pyramid(input.map);
   if (pyramid.levels.empty()) throw Error(ExitCode::runtime_failure, "internal: empty normal map", input.record.path);
   nlohmann::json metadata;
   metadata["inputs"] = nlohmann::json::array({input.record.to_json()});
@@ -41,11 +41,12 @@ AssetWriter bake_mip_asset(const LoadedNormalMap& input) {
   metadata["statistics"] = mip_statistics(pyramid);
   AssetWriter writer("mip", std::move(metadata));
   for (size_t k = 0; k < pyramid.levels.size(); ++k) {
-    const NormalMap& level = pyramid.levels[k];
-    // Vec3f is three packed floats (no padding), so the texel array is the [h, w, 3] section as it is.
+    NormalMap& level = pyramid.levels[k];
+    // Vec3f is three packed floats (no padding), so the texel array is the [h, w, 3] section as it is: the
+    // writer takes it over.
     static_assert(sizeof(Vec3f) == 3 * sizeof(float));
-    writer.add("level_" + std::to_string(k), {level.height, level.width, 3},
-               std::span<const float>(level.texels.front().data(), level.texels.size() * 3));
+    writer.add_bytes("level_" + std::to_string(k), ElementType::f32, {level.height, level.width, 3},
+                     std::move(level.texels));
   }
   return writer;
 }

@@ -6,7 +6,10 @@
 
 #include "formats/asset.h"
 #include "formats/asset_writer.h"
+#include "formats/atomic_file.h"
+#include "libbake/core/uninitialized_vector.h"
 #include "tests/formats/asset_fixtures.h"
+#include "tests/scratch_dir.h"
 
 namespace mbk {
 namespace {
@@ -83,6 +86,41 @@ TEST(ContainerRoundTrip, MetadataPreservedWithProducerAndKind) {
 TEST(ContainerRoundTrip, IdenticalContentGivesIdenticalBytes) {
   EXPECT_EQ(test::valid_mip_bytes(7, 5), test::valid_mip_bytes(7, 5));
   EXPECT_NE(test::valid_mip_bytes(7, 5), test::valid_mip_bytes(5, 7));
+}
+
+// Sections taken over (moved in, any allocator) and copied in give the same file, and write() streams exactly
+// the bytes serialize() returns: odd lengths (padding between sections), an empty section, u8 and f32.
+TEST(ContainerRoundTrip, TakenOverSectionsAndStreamedWriteGiveTheSerializedBytes) {
+  auto fill = [](AssetWriter& w, bool move) {
+    std::vector<uint8_t> odd = pattern<uint8_t>(101);
+    std::vector<float> floats = pattern<float>(37);
+    UninitializedVector<uint8_t> raw(5);
+    for (size_t i = 0; i < raw.size(); ++i) raw[i] = uint8_t(200 + i);
+    if (move) {
+      w.add_bytes("odd", ElementType::u8, {101}, std::move(odd));
+      w.add("empty", {0}, std::vector<float>());
+      w.add("floats", {37}, std::move(floats));
+      w.add_bytes("raw", ElementType::u8, {5}, std::move(raw));
+    } else {
+      w.add("odd", {101}, odd);
+      w.add<float>("empty", {0}, std::span<const float>());
+      w.add("floats", {37}, floats);
+      w.add_bytes("raw", ElementType::u8, {5}, std::span<const uint8_t>(raw.data(), raw.size()));
+    }
+  };
+  AssetWriter moved = test::mip_writer(2, 2), copied = test::mip_writer(2, 2);
+  fill(moved, true);
+  fill(copied, false);
+  const std::vector<uint8_t> bytes = copied.serialize();
+  EXPECT_EQ(moved.serialize(), bytes);
+  EXPECT_EQ(moved.file_size(), bytes.size());
+  test::ScratchDir dir("streamed_write");
+  moved.write(dir.path() / "streamed.mbk");
+  EXPECT_EQ(read_file_bytes(dir.path() / "streamed.mbk"), bytes);
+  const Asset a = Asset::parse(bytes, "memory");
+  EXPECT_EQ(a.read<uint8_t>("odd"), pattern<uint8_t>(101));
+  EXPECT_EQ(a.read<float>("floats"), pattern<float>(37));
+  EXPECT_EQ(a.read<uint8_t>("raw"), (std::vector<uint8_t>{200, 201, 202, 203, 204}));
 }
 
 TEST(ContainerRoundTrip, WriterRejectsMalformedSections) {
