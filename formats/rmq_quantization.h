@@ -15,6 +15,8 @@
 // minimum of its quantized values. The RMQ bake relies on that to build coarser levels from codes alone.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 namespace mbk {
@@ -34,5 +36,50 @@ uint32_t rmq_quantize_up(double v, const RmqRange& range, uint32_t bits);
 // quantize_up(v) when its value is exactly v, else the code just below it: the largest code whose value is
 // <= v among those not above quantize_up(v). Same requirement.
 uint32_t rmq_quantize_down(double v, const RmqRange& range, uint32_t bits);
+
+// rmq_dequantize / rmq_quantize_up / rmq_quantize_down for many values of one range: the quantum and its
+// reciprocal computed once, the common case inline and without a division (the guess ceil((v - lo) / quantum)
+// is at most a code off after rounding and is checked against value(); otherwise a binary search).
+class RmqQuantizer {
+ public:
+  RmqQuantizer(const RmqRange& range, uint32_t bits)
+      : range_(range),
+        bits_(bits),
+        q_max_(rmq_code_max(bits)),
+        quantum_(range.quantum(bits)),
+        inverse_(1.0 / quantum_),
+        fast_(quantum_ > 0.0 && std::isfinite(quantum_) && std::isfinite(inverse_)) {}
+
+  double value(uint32_t q) const {
+    if (q == 0) return range_.lo;
+    if (q >= q_max_) return range_.hi;
+    return std::min(range_.hi, range_.lo + q * quantum_);
+  }
+  uint32_t up(double v) const {
+    if (fast_ && v >= range_.lo && v <= range_.hi) {
+      const double guess = std::ceil((v - range_.lo) * inverse_);
+      const uint32_t g = uint32_t(std::clamp(guess, 0.0, double(q_max_)));
+      for (uint32_t q = g > 0 ? g - 1 : 0; q <= std::min(g + 1, q_max_); ++q)
+        if (value(q) >= v) {
+          if (q == 0 || value(q - 1) < v) return q;
+          break;
+        }
+    }
+    return up_by_search(v);
+  }
+  uint32_t down(double v) const {
+    const uint32_t u = up(v);
+    return value(u) == v ? u : u - 1;
+  }
+  double quantum() const { return quantum_; }
+
+ private:
+  // Checks lo <= v <= hi (Error(runtime_failure) otherwise) and finds the code by binary search.
+  uint32_t up_by_search(double v) const;
+  RmqRange range_;
+  uint32_t bits_, q_max_;
+  double quantum_, inverse_;
+  bool fast_;
+};
 
 }  // namespace mbk

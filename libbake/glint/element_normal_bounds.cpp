@@ -8,13 +8,18 @@
 
 namespace mbk {
 
-RmqBounds element_normal_bounds(const NormalMap& example, uint32_t x, uint32_t row) {
+Vec2 element_normal_reach(const NormalMap& example, uint32_t x, uint32_t row) {
   const Mat2 j = example_jacobian(example, x, row);
   constexpr double kReach = kGlintSpatialCutoffSigmas * kGlintElementSigmaTexels;  // 3 sigma_h, in texels
-  const double rx = (std::abs(j(0, 0)) + std::abs(j(0, 1))) * kReach;
-  const double ry = (std::abs(j(1, 0)) + std::abs(j(1, 1))) * kReach;
-  const Vec3f& n = example.at(x, row);
-  return {double(n.x()) - rx, double(n.x()) + rx, double(n.y()) - ry, double(n.y()) + ry};
+  return Vec2((std::abs(j(0, 0)) + std::abs(j(0, 1))) * kReach, (std::abs(j(1, 0)) + std::abs(j(1, 1))) * kReach);
+}
+
+RmqBounds element_normal_bounds(const Vec3f& n, const Vec2& reach) {
+  return {double(n.x()) - reach.x(), double(n.x()) + reach.x(), double(n.y()) - reach.y(), double(n.y()) + reach.y()};
+}
+
+RmqBounds element_normal_bounds(const NormalMap& example, uint32_t x, uint32_t row) {
+  return element_normal_bounds(example.at(x, row), element_normal_reach(example, x, row));
 }
 
 }  // namespace mbk

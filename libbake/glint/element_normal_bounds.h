@@ -22,7 +22,10 @@
 
 namespace mbk {
 
-// The interval of n_x and n_y (the same bounds type as an RMQ query's answer).
+// The half-widths of the interval, (|J_x0| + |J_x1|, |J_y0| + |J_y1|) * 3 sigma_h.
+Vec2 element_normal_reach(const NormalMap& example, uint32_t x, uint32_t row);
+// The interval of n_x and n_y (the same bounds type as an RMQ query's answer) from the texel's normal and reach.
+RmqBounds element_normal_bounds(const Vec3f& normal, const Vec2& reach);
 RmqBounds element_normal_bounds(const NormalMap& example, uint32_t x, uint32_t row);
 
 }  // namespace mbk

@@ -48,14 +48,14 @@ nlohmann::json rmq_statistics(const RmqTable& t) {
 }  // namespace
 
 AssetWriter bake_rmq_asset(const LoadedNormalMap& input, uint32_t patch, uint32_t bits, Progress& progress) {
-  const RmqTable t = build_rmq_table(input.map, patch, bits, progress);
+  RmqTable t = build_rmq_table(input.map, patch, bits, progress);
   nlohmann::json metadata;
   metadata["inputs"] = nlohmann::json::array({input.record.to_json()});
   metadata["parameters"] = t.layout.to_parameters();
   metadata["conventions"] = rmq_conventions();
   metadata["statistics"] = rmq_statistics(t);
   AssetWriter writer("rmq", std::move(metadata));
-  writer.add_bytes("table", t.layout.code_type(), t.layout.table_shape(), t.table);
+  writer.add_bytes("table", t.layout.code_type(), t.layout.table_shape(), std::move(t.table));
   const std::vector<double> range = {t.range[0].lo, t.range[0].hi, t.range[1].lo, t.range[1].hi};
   writer.add<double>("range", {2, 2}, range);
   return writer;

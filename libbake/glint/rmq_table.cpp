@@ -23,12 +23,17 @@ struct RowLeafSums {
   double half_x = 0, max_half_x = 0, half_y = 0, max_half_y = 0, slack = 0, max_slack = 0;
 };
 
-std::array<RmqRange, 2> leaf_range(const NormalMap& example, Progress& progress) {
+// Every texel's element reach (computed once, used by both passes over the leaves), and the range: per
+// component the min of the leaf minima and the max of the leaf maxima.
+std::array<RmqRange, 2> leaf_range(const NormalMap& example, std::vector<Vec2>& reach, Progress& progress) {
   std::vector<RowRange> rows(example.height);
+  reach.resize(size_t(example.width) * example.height);
   parallel_for(0, example.height, [&](int64_t row) {
     RowRange& r = rows[row];
     for (uint32_t x = 0; x < example.width; ++x) {
-      const RmqBounds b = element_normal_bounds(example, x, uint32_t(row));
+      const size_t t = size_t(row) * example.width + x;
+      reach[t] = element_normal_reach(example, x, uint32_t(row));
+      const RmqBounds b = element_normal_bounds(example.texels[t], reach[t]);
       r.lo_x = std::min(r.lo_x, b.min_x), r.hi_x = std::max(r.hi_x, b.max_x);
       r.lo_y = std::min(r.lo_y, b.min_y), r.hi_y = std::max(r.hi_y, b.max_y);
     }
@@ -57,22 +62,23 @@ void load_entry(const uint8_t* table, uint64_t index, uint32_t (&codes)[4]) {
 
 // Level 0: the quantized leaf intervals, and the leaf statistics.
 template <typename Code>
-RmqLeafStatistics quantize_leaves(const NormalMap& example, RmqTable& t, Progress& progress) {
+RmqLeafStatistics quantize_leaves(const NormalMap& example, const std::vector<Vec2>& reach, RmqTable& t,
+                                  Progress& progress) {
   const RmqLayout& L = t.layout;
-  const double quantum[2] = {t.range[0].quantum(L.bits), t.range[1].quantum(L.bits)};
+  const RmqQuantizer quantizer[2] = {RmqQuantizer(t.range[0], L.bits), RmqQuantizer(t.range[1], L.bits)};
   std::vector<RowLeafSums> rows(L.height);
   parallel_for(0, L.height, [&](int64_t row) {
     RowLeafSums& s = rows[row];
     for (uint32_t x = 0; x < L.width; ++x) {
-      const RmqBounds b = element_normal_bounds(example, x, uint32_t(row));
+      const size_t texel = size_t(row) * L.width + x;
+      const RmqBounds b = element_normal_bounds(example.texels[texel], reach[texel]);
       const double ends[4] = {b.min_x, b.max_x, b.min_y, b.max_y};
       uint32_t codes[4];
       for (int c = 0; c < 4; ++c) {
-        const RmqRange& range = t.range[c / 2];
-        const bool is_min = c % 2 == 0;
-        codes[c] = is_min ? rmq_quantize_down(ends[c], range, L.bits) : rmq_quantize_up(ends[c], range, L.bits);
-        const double slack = std::abs(rmq_dequantize(codes[c], range, L.bits) - ends[c]);
-        const double in_quanta = quantum[c / 2] > 0 ? slack / quantum[c / 2] : 0.0;
+        const RmqQuantizer& q = quantizer[c / 2];
+        codes[c] = c % 2 == 0 ? q.down(ends[c]) : q.up(ends[c]);
+        const double slack = std::abs(q.value(codes[c]) - ends[c]);
+        const double in_quanta = q.quantum() > 0 ? slack / q.quantum() : 0.0;
         s.slack += in_quanta;
         s.max_slack = std::max(s.max_slack, in_quanta);
       }
@@ -120,8 +126,8 @@ void build_level(RmqTable& t, uint32_t k, Progress& progress) {
 }
 
 template <typename Code>
-void build_codes(const NormalMap& example, RmqTable& t, Progress& progress) {
-  t.leaf = quantize_leaves<Code>(example, t, progress);
+void build_codes(const NormalMap& example, const std::vector<Vec2>& reach, RmqTable& t, Progress& progress) {
+  t.leaf = quantize_leaves<Code>(example, reach, t, progress);
   for (uint32_t k = 1; k < t.layout.levels; ++k) build_level<Code>(t, k, progress);
 }
 
@@ -142,12 +148,13 @@ RmqTable build_rmq_table(const NormalMap& example, uint32_t patch, uint32_t bits
                                                 " (patch: a power of two in [1, 4096] not above the example's "
                                                 "smaller side; bits: 8 or 16)");
   progress.start("rmq table", uint64_t(example.height) * (t.layout.levels + 1));
-  t.range = leaf_range(example, progress);
-  t.table.assign(t.layout.table_bytes(), 0);
+  std::vector<Vec2> reach;
+  t.range = leaf_range(example, reach, progress);
+  t.table.resize(t.layout.table_bytes());  // every entry of every level is written below
   if (bits == 8)
-    build_codes<uint8_t>(example, t, progress);
+    build_codes<uint8_t>(example, reach, t, progress);
   else
-    build_codes<uint16_t>(example, t, progress);
+    build_codes<uint16_t>(example, reach, t, progress);
   progress.finish();
   return t;
 }

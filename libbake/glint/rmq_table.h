@@ -6,7 +6,8 @@
 // Build, in three passes over the rows (each row writes only its own entries: identical bytes whatever the
 // thread count):
 // 1. The range: per component, [lo, hi] = [min of the leaf minima, max of the leaf maxima], where a texel's
-//    leaf interval is its element's reach (element_normal_bounds.h), computed in double.
+//    leaf interval is its element's reach (element_normal_bounds.h), computed in double, once (kept per texel
+//    for pass 2: 16 bytes a texel beside the table's 8 per level at 16 bits).
 // 2. Level 0: each leaf interval quantized, min down and max up (one quantum at most, in the safe direction).
 // 3. Level k + 1 from level k (Algorithm 1's recursion, bottom-up): entry (k+1, x, row) is the min/max of the
 //    level-k entries at x or x + 2^k and row or row + 2^k, children outside the example skipped, so squares
@@ -14,7 +15,8 @@
 // Deviation [Wang20]: the recursion runs on the quantized codes, not on doubles quantized afterwards. Both
 // quantizers are monotone, so min/max commute with them and the codes are IDENTICAL to quantizing the exact
 // double min/max of every square (test: RmqTable.EveryStoredSquareIsTheQuantizedClippedBruteForce), while
-// the bake holds nothing but the output array (no double copy of 7 levels: 128 MiB per level at 2048^2).
+// the bake holds nothing but the output array and the leaf reaches (no double copy of 7 levels: 128 MiB per
+// level at 2048^2).
 // Deviation [Wang20]: the paper stores levels 1..K and reads a texel's own normal at level 0; here level 0 is
 // stored because the leaf is the element's interval (Jacobian and cut-off), not the bare normal.
 #pragma once
@@ -26,6 +28,7 @@
 #include "formats/rmq_layout.h"
 #include "formats/rmq_query.h"
 #include "libbake/core/progress.h"
+#include "libbake/core/uninitialized_vector.h"
 #include "libbake/image/normal_map.h"
 
 namespace mbk {
@@ -47,8 +50,8 @@ struct RmqLeafStatistics {
 
 struct RmqTable {
   RmqLayout layout;
-  std::array<RmqRange, 2> range;  // n_x, n_y
-  std::vector<uint8_t> table;     // the level-major code array exactly as stored (u16 little-endian or u8)
+  std::array<RmqRange, 2> range;       // n_x, n_y
+  UninitializedVector<uint8_t> table;  // the level-major code array exactly as stored (u16 little-endian or u8)
   RmqLeafStatistics leaf;
 
   RmqTableView view() const { return RmqTableView(layout, range, table); }
