@@ -38,11 +38,19 @@ void ShBasisEvaluator::evaluate(const Vec3& d, std::span<double> out) const {
   const double t = std::clamp(d.z(), -1.0, 1.0);
   // sin(theta) from x and y (not sqrt(1 - z^2)), so that it keeps full relative precision near the poles.
   const double s = std::hypot(d.x(), d.y());
-  const double phi = std::atan2(d.y(), d.x());
-  double pmm = kInvSqrt4Pi;  // P_m^m, updated along the diagonal
+  // cos(phi) and sin(phi) of phi = atan2(y, x) without the trigonometric calls (phi = 0 on the pole, where every
+  // m > 0 term is 0), and cos(m phi), sin(m phi) by the angle-addition recurrence in m.
+  const double cos_phi = s > 0.0 ? d.x() / s : 1.0, sin_phi = s > 0.0 ? d.y() / s : 0.0;
+  double cos_m = 1.0, sin_m = 0.0;  // cos(m phi), sin(m phi)
+  double pmm = kInvSqrt4Pi;         // P_m^m, updated along the diagonal
   for (int m = 0; m <= order_; ++m) {
-    if (m > 0) pmm *= diagonal_[size_t(m)] * s;
-    const double c = m == 0 ? 1.0 : kSqrt2 * std::cos(m * phi), sn = m == 0 ? 0.0 : kSqrt2 * std::sin(m * phi);
+    if (m > 0) {
+      pmm *= diagonal_[size_t(m)] * s;
+      const double next_cos = cos_m * cos_phi - sin_m * sin_phi;
+      sin_m = sin_m * cos_phi + cos_m * sin_phi;
+      cos_m = next_cos;
+    }
+    const double c = m == 0 ? 1.0 : kSqrt2 * cos_m, sn = m == 0 ? 0.0 : kSqrt2 * sin_m;
     auto store = [&](int l, double p) {
       if (m == 0) {
         out[size_t(sh_index(l, 0))] = p;

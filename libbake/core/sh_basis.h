@@ -18,6 +18,8 @@
 //     a_lm = sqrt((4 l^2 - 1) / (l^2 - m^2)),  b_lm = sqrt(((l - 1)^2 - m^2) / (4 (l - 1)^2 - 1)).
 //   Every value is bounded by sqrt((2l + 1) / (4 pi)) (|Y_lm| <= sqrt((2l+1)/(2 pi)) for m != 0), so nothing
 //   overflows; near the poles sin(theta)^m may underflow to 0, which is then the correctly rounded value.
+//   cos(m phi) and sin(m phi) come from cos phi = x / sin(theta), sin phi = y / sin(theta) by angle addition
+//   in m (no trigonometric call; the rounding error grows ~m ulp, 3e-14 relative at m = 128).
 #pragma once
 
 #include <span>

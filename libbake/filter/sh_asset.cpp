@@ -3,10 +3,12 @@
 
 #include <Imath/half.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "formats/error.h"
+#include "libbake/core/parallel.h"
 #include "libbake/core/sh_basis.h"
 
 namespace mbk {
@@ -19,7 +21,7 @@ ShPrecision parse_precision(const std::string& name) {
   throw Error(ExitCode::bad_command_line, "unknown precision '" + name + "' (expected f16 or f32)", "--precision");
 }
 
-AssetWriter sh_asset_writer(const LoadedNormalMap& input, const ShPyramid& pyramid, const ShBakeOptions& options) {
+AssetWriter sh_asset_writer(const LoadedNormalMap& input, ShPyramid pyramid, const ShBakeOptions& options) {
   const NormalMap& map = input.map;
   const int count = sh_count(pyramid.order);
   nlohmann::json metadata;
@@ -42,23 +44,35 @@ AssetWriter sh_asset_writer(const LoadedNormalMap& input, const ShPyramid& pyram
   metadata["conventions"]["window"] = "evaluate sum_lm window[l] g_lm Y_lm; the stored g_lm are not windowed";
   nlohmann::json mean_length = nlohmann::json::array(), rounding = nlohmann::json::array();
   const double c1 = std::sqrt(3.0 / (4.0 * std::numbers::pi));
-  std::vector<std::vector<Imath::half>> halves;
-  for (const ShLevel& level : pyramid.levels) {
-    double length_sum = 0.0, worst = 0.0;
-    const size_t texels = size_t(level.width) * level.height;
-    for (size_t t = 0; t < texels; ++t) {
-      const float* g = &level.coefficients[t * size_t(count)];
-      if (count > 3) length_sum += std::sqrt(double(g[1]) * g[1] + double(g[2]) * g[2] + double(g[3]) * g[3]) / c1;
-    }
-    if (options.precision == ShPrecision::f16) {
-      std::vector<Imath::half> h(level.coefficients.size());
-      for (size_t i = 0; i < h.size(); ++i) {
-        h[i] = Imath::half(level.coefficients[i]);
-        worst = std::max(worst, std::abs(double(float(h[i])) - double(level.coefficients[i])));
+  // Per level, in parallel over rows: the statistics (per-row partials, added in row order) and the f16 copy;
+  // the f32 coefficients are handed to the writer (f32) or freed once converted (f16).
+  std::vector<std::vector<Imath::half>> halves(pyramid.levels.size());
+  for (size_t k = 0; k < pyramid.levels.size(); ++k) {
+    ShLevel& level = pyramid.levels[k];
+    const bool to_half = options.precision == ShPrecision::f16;
+    if (to_half) halves[k].resize(level.coefficients.size());
+    std::vector<double> row_length(level.height, 0.0), row_worst(level.height, 0.0);
+    parallel_for(0, level.height, [&](int64_t row) {
+      const size_t begin = size_t(row) * level.width * size_t(count), end = begin + size_t(level.width) * count;
+      for (size_t i = begin; i < end; i += size_t(count)) {
+        const float* g = &level.coefficients[i];
+        if (count > 3)
+          row_length[size_t(row)] += std::sqrt(double(g[1]) * g[1] + double(g[2]) * g[2] + double(g[3]) * g[3]) / c1;
       }
-      halves.push_back(std::move(h));
-    }
-    mean_length.push_back(count > 3 ? length_sum / double(texels) : 1.0);
+      if (!to_half) return;
+      double worst = 0.0;
+      for (size_t i = begin; i < end; ++i) {
+        const Imath::half h(level.coefficients[i]);
+        halves[k][i] = h;
+        worst = std::max(worst, std::abs(double(float(h)) - double(level.coefficients[i])));
+      }
+      row_worst[size_t(row)] = worst;
+    });
+    double length_sum = 0.0, worst = 0.0;
+    for (uint32_t row = 0; row < level.height; ++row)
+      length_sum += row_length[row], worst = std::max(worst, row_worst[row]);
+    if (to_half) std::vector<float>().swap(level.coefficients);
+    mean_length.push_back(count > 3 ? length_sum / (double(level.width) * level.height) : 1.0);
     rounding.push_back(worst);
   }
   metadata["statistics"] = {{"mean_normal_length_per_level", mean_length}, {"max_rounding_error_per_level", rounding}};
@@ -67,12 +81,12 @@ AssetWriter sh_asset_writer(const LoadedNormalMap& input, const ShPyramid& pyram
   writer.add("normals", {map.height, map.width, 3},
              std::span<const float>(map.texels.front().data(), map.texels.size() * 3));
   for (size_t k = 0; k < pyramid.levels.size(); ++k) {
-    const ShLevel& level = pyramid.levels[k];
+    ShLevel& level = pyramid.levels[k];
     const std::vector<uint64_t> shape = {level.height, level.width, uint64_t(count)};
     if (options.precision == ShPrecision::f16)
-      writer.add("level_" + std::to_string(k + 1), shape, halves[k]);
+      writer.add("level_" + std::to_string(k + 1), shape, std::move(halves[k]));
     else
-      writer.add("level_" + std::to_string(k + 1), shape, level.coefficients);
+      writer.add("level_" + std::to_string(k + 1), shape, std::move(level.coefficients));
   }
   std::vector<float> window;
   for (double w : window_factors(options.window, pyramid.order)) window.push_back(float(w));

@@ -26,6 +26,6 @@ struct ShBakeOptions {
 // [h_k, w_k, (order+1)^2]; `window` f32 [order + 1]. Metadata parameters {width, height, levels, order,
 // coefficients, precision, window}; statistics per level: mean length of the mean normal and the largest
 // rounding error of the stored coefficients.
-AssetWriter sh_asset_writer(const LoadedNormalMap& input, const ShPyramid& pyramid, const ShBakeOptions& options);
+AssetWriter sh_asset_writer(const LoadedNormalMap& input, ShPyramid pyramid, const ShBakeOptions& options);
 
 }  // namespace mbk

@@ -1,6 +1,7 @@
 // Builds SH NDF pyramids (see sh_pyramid.h).
 #include "libbake/filter/sh_pyramid.h"
 
+#include <algorithm>
 #include <string>
 
 #include "formats/error.h"
@@ -46,14 +47,17 @@ ShLevel level_from_children(const ShLevel& finer, int count, uint32_t w, uint32_
   ShLevel level{w, h, std::vector<float>(size_t(w) * h * size_t(count))};
   parallel_for(0, h, [&](int64_t row) {
     const uint32_t j = uint32_t(row);
+    std::vector<double> sum(static_cast<size_t>(count));
     for (uint32_t i = 0; i < w; ++i) {
+      // Coefficients innermost: each child's coefficients are read in order, once.
+      std::fill(sum.begin(), sum.end(), 0.0);
+      for (uint32_t dy = 0; dy < sy; ++dy)
+        for (uint32_t dx = 0; dx < sx; ++dx) {
+          const float* child = finer.texel(i * sx + dx, j * sy + dy, count);
+          for (int k = 0; k < count; ++k) sum[size_t(k)] += child[k];
+        }
       float* out = &level.coefficients[(size_t(j) * w + i) * size_t(count)];
-      for (int k = 0; k < count; ++k) {
-        double sum = 0.0;
-        for (uint32_t dy = 0; dy < sy; ++dy)
-          for (uint32_t dx = 0; dx < sx; ++dx) sum += finer.texel(i * sx + dx, j * sy + dy, count)[k];
-        out[k] = float(sum / double(sx * sy));
-      }
+      for (int k = 0; k < count; ++k) out[k] = float(sum[size_t(k)] / double(sx * sy));
     }
   });
   return level;
