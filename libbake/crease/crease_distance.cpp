@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "libbake/core/parallel.h"
+
 namespace mbk {
 
 nlohmann::json DistanceStatistics::to_json() const {
@@ -17,7 +19,8 @@ double segment_distance(const CurveSegment& s, const Vec2& p, Vec2* nearest) {
   const double t = len2 > 0.0 ? std::clamp((p - s.a).dot(d) / len2, 0.0, 1.0) : 0.0;
   const Vec2 q = t == 1.0 ? s.b : Vec2(s.a + t * d);
   if (nearest) *nearest = q;
-  return (p - q).norm();
+  const double ex = p.x() - q.x(), ey = p.y() - q.y();
+  return std::sqrt(ex * ex + ey * ey);  // no hypot: the components are texel-sized, nothing over- or underflows
 }
 
 DistanceStatistics compute_distance_maps(const std::vector<CurveSegment>& segments, double band, CreaseField& field,
@@ -34,18 +37,29 @@ DistanceStatistics compute_distance_maps(const std::vector<CurveSegment>& segmen
       nearest[k] = s;
     }
   };
-  progress.start("crease: distance map", segments.size() + 2);
-  // Brute force over each segment's bounding box grown by the band (samples at x = i - 0.5).
+  progress.start("crease: distance map", 4);
+  // Brute force over each segment's bounding box grown by the band (samples at x = i - 0.5), rows in parallel:
+  // each row takes the segments whose box covers it. A sample keeps the nearest segment, the smallest index on
+  // a tie, whatever order the offers come in.
+  struct Box {
+    int64_t i0, i1, j0, j1;
+  };
+  std::vector<Box> boxes(segments.size());
+  std::vector<std::vector<int64_t>> row_segments(static_cast<size_t>(ny));
   for (size_t s = 0; s < segments.size(); ++s) {
     const CurveSegment& seg = segments[s];
-    const int64_t i0 = std::max<int64_t>(0, int64_t(std::ceil(std::min(seg.a.x(), seg.b.x()) - band + 0.5)));
-    const int64_t i1 = std::min<int64_t>(nx - 1, int64_t(std::floor(std::max(seg.a.x(), seg.b.x()) + band + 0.5)));
-    const int64_t j0 = std::max<int64_t>(0, int64_t(std::ceil(std::min(seg.a.y(), seg.b.y()) - band + 0.5)));
-    const int64_t j1 = std::min<int64_t>(ny - 1, int64_t(std::floor(std::max(seg.a.y(), seg.b.y()) + band + 0.5)));
-    for (int64_t j = j0; j <= j1; ++j)
-      for (int64_t i = i0; i <= i1; ++i) offer(i, j, int64_t(s));
-    progress.advance();
+    Box& b = boxes[s];
+    b.i0 = std::max<int64_t>(0, int64_t(std::ceil(std::min(seg.a.x(), seg.b.x()) - band + 0.5)));
+    b.i1 = std::min<int64_t>(nx - 1, int64_t(std::floor(std::max(seg.a.x(), seg.b.x()) + band + 0.5)));
+    b.j0 = std::max<int64_t>(0, int64_t(std::ceil(std::min(seg.a.y(), seg.b.y()) - band + 0.5)));
+    b.j1 = std::min<int64_t>(ny - 1, int64_t(std::floor(std::max(seg.a.y(), seg.b.y()) + band + 0.5)));
+    for (int64_t j = b.j0; j <= b.j1; ++j) row_segments[size_t(j)].push_back(int64_t(s));
   }
+  parallel_for(0, ny, [&](int64_t j) {
+    for (int64_t s : row_segments[size_t(j)])
+      for (int64_t i = boxes[size_t(s)].i0; i <= boxes[size_t(s)].i1; ++i) offer(i, j, s);
+  });
+  progress.advance();
   DistanceStatistics stats;
   stats.band = band;
   for (double d : dist) stats.samples_in_band += d <= band;
@@ -75,7 +89,9 @@ DistanceStatistics compute_distance_maps(const std::vector<CurveSegment>& segmen
     for (int64_t i = 0; i < nx; ++i) take(i, j, i - 1, j);
   }
   progress.advance();
-  for (int64_t j = 0; j < ny; ++j)
+  // The maps from each sample's nearest segment, rows in parallel (the largest distance per row, then over rows).
+  std::vector<double> row_max(size_t(ny), 0.0);
+  parallel_for(0, ny, [&](int64_t j) {
     for (int64_t i = 0; i < nx; ++i) {
       const size_t k = size_t(j * nx + i);
       const CurveSegment& seg = segments[size_t(nearest[k])];
@@ -88,8 +104,11 @@ DistanceStatistics compute_distance_maps(const std::vector<CurveSegment>& segmen
       field.gradient[2 * k] = float(g.x());
       field.gradient[2 * k + 1] = float(g.y());
       field.side[k] = cross >= 0.0 ? 1 : -1;
-      stats.max_distance = std::max(stats.max_distance, d);
+      row_max[size_t(j)] = std::max(row_max[size_t(j)], d);
     }
+  });
+  for (double d : row_max) stats.max_distance = std::max(stats.max_distance, d);
+  progress.advance();
   progress.finish();
   return stats;
 }

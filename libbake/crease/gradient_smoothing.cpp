@@ -34,7 +34,7 @@ double smooth_gradient(CreaseField& field, uint32_t iterations) {
         double gx = g[2 * k], gy = g[2 * k + 1];
         if (n > 0) {
           const double mx = gx + 0.5 * (sx / n - gx), my = gy + 0.5 * (sy / n - gy);
-          const double len = std::hypot(mx, my);
+          const double len = std::sqrt(mx * mx + my * my);  // unit-scale components: no hypot needed
           if (len > 1e-12) gx = mx / len, gy = my / len;
         }
         next[2 * k] = float(gx);
