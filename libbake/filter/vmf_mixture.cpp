@@ -12,7 +12,7 @@
 namespace mbk {
 namespace {
 
-constexpr size_t kChunk = 1 << 14;
+constexpr size_t kChunk = kVmfSumChunk;
 // Terms of a log-sum-exp more than 40 nats below the largest are taken as 0 rather than passed to exp: e^-40 ~
 // 4e-18 is below half an ulp of the sum (>= 1), so the normaliser is unchanged, and a responsibility that small
 // moves the M-step sums by less than 1e-17 relative. At high kappa most lobes are that far from most normals.

@@ -54,6 +54,8 @@ namespace mbk {
 inline constexpr double kVmfKappaMax = 1e6;
 // Amplitude below which a lobe is emptied.
 inline constexpr double kEmptyAmplitude = 1e-9;
+// Normals per chunk of the E-step's sums (the unit of its parallel split; partial sums are added in chunk order).
+inline constexpr size_t kVmfSumChunk = size_t(1) << 14;
 // EM iterations at most per fit by default.
 inline constexpr int kVmfDefaultMaxIterations = 1000;
 

@@ -133,16 +133,25 @@ VmfLevelStatistics summarise(const std::vector<EmReport>& reports, const VmfLeve
   return s;
 }
 
-// Texels in parallel, except on levels of fewer texels than threads could share (the top few), where each
-// texel's EM splits its own normals across the threads instead (vmf_mixture.cpp's chunked E-step; nested
-// parallel loops would run serially). Either way each texel's result is the same.
+// Texels in parallel, except on levels of few large texels, where each texel's EM splits its own normals
+// across the threads instead (vmf_mixture.cpp's chunked E-step; nested parallel loops would run serially):
+// fewer texels than 4 per thread, or fewer than 16 per thread when a texel's E-step has two chunks per thread
+// (one slow texel would otherwise keep the other threads waiting at the end of the level). Either way each
+// texel's result is the same.
 template <typename F>
-void for_each_texel(int64_t count, F&& body) {
-  if (count >= 4 * thread_count()) {
+void for_each_texel(int64_t count, uint64_t normals_per_texel, F&& body) {
+  const int64_t threads = thread_count();
+  const bool splits = normals_per_texel >= 2 * kVmfSumChunk * uint64_t(threads);
+  if (count >= 4 * threads && !(splits && count < 16 * threads)) {
     parallel_for(0, count, body);
   } else {
     for (int64_t t = 0; t < count; ++t) body(t);
   }
+}
+
+// Normals under one texel of a w x h level (at least).
+uint64_t normals_per_texel(const NormalMap& map, uint32_t w, uint32_t h) {
+  return uint64_t(map.width / w) * (map.height / h);
 }
 
 // The mean over a level's texels of sum_i w_i log g(n_i), g the stored (float) mixture decoded as a renderer
@@ -151,7 +160,7 @@ double stored_log_likelihood(const NormalMap& map, const VmfLevel& level, int J,
   const LevelGeometry g = geometry(map, level.width, level.height);
   const size_t count = size_t(level.width) * level.height;
   std::vector<double> ll(count);
-  for_each_texel(int64_t(count), [&](int64_t t) {
+  for_each_texel(int64_t(count), normals_per_texel(map, level.width, level.height), [&](int64_t t) {
     const uint32_t i = uint32_t(size_t(t) % level.width), j = uint32_t(size_t(t) / level.width);
     std::vector<WeightedNormal> normals;
     std::vector<float> unused;
@@ -219,7 +228,7 @@ VmfPyramid build_vmf_pyramid(const NormalMap& map, const Image* features, const 
     VmfLevel level{w, h, std::vector<float>(size_t(w) * h * J * 4), {}, {}};
     if (F) level.features.assign(size_t(w) * h * J * F, 0.0f);
     std::vector<EmReport> reports(size_t(w) * h);
-    for_each_texel(int64_t(w) * h, [&](int64_t t) {
+    for_each_texel(int64_t(w) * h, normals_per_texel(map, w, h), [&](int64_t t) {
       const uint32_t i = uint32_t(t % w), j = uint32_t(t / w);
       std::vector<uint32_t> xs, ys;
       for (const MipWeight& x : cx[i]) xs.push_back(x.index);
@@ -290,7 +299,7 @@ VmfPyramid build_vmf_pyramid(const NormalMap& map, const Image* features, const 
       // diagonal would cost more in barriers than it saves); refits are EM runs and go in parallel.
       const int64_t count = int64_t(last) + 1 - first;
       if (refit) {
-        for_each_texel(count, texel_body);
+        for_each_texel(count, normals_per_texel(map, w, h), texel_body);
       } else {
         for (int64_t offset = 0; offset < count; ++offset) texel_body(offset);
       }
