@@ -46,18 +46,7 @@ for n in 256 512 1024 2048; do
   bake_rows+="| panels ${n}x${n} | $segs | $cells | $(ms "$crease") | $(ms "$mip") | $(ratio "$crease" "$mip") | $size |"$'\n'
 done
 # 10,000 random segments of length 1..64 texels on a 1024^2 map (deterministic: Python's seeded Mersenne Twister).
-python3 - "$work/random.json" <<'PY'
-import json, math, random, sys
-random.seed(1)
-curves = []
-while len(curves) < 10000:
-    x, y = random.uniform(0, 1024), random.uniform(0, 1024)
-    a, l = random.uniform(0, 2 * math.pi), random.uniform(1, 64)
-    u, v = min(max(x + l * math.cos(a), 0), 1024), min(max(y + l * math.sin(a), 0), 1024)
-    if (u, v) != (x, y):
-        curves.append({"points": [[x, y], [u, v]]})
-json.dump({"curves": curves}, open(sys.argv[1], "w"))
-PY
+python3 scripts/random-curves.py "$work/random.json" 1024 10000
 "$exe" gen bumps --size 1024 -q -o "$work/b1024.exr"
 random_bake=$(bake_time "$exe" crease "$work/b1024.exr" --curves "$work/random.json" -o "$work/r.mbk")
 random_line=$("$exe" crease "$work/b1024.exr" --curves "$work/random.json" -o "$work/r.mbk")

@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages microbake needs to build and test, only when some are missing
+# Installs the Debian 12 packages microbake needs to build, test and benchmark (openimageio-tools gives maketx,
+# scripts/bench.sh's yardstick for mip; time, jq and bc the benchmark scripts), only when some are missing
 # (quiet and fast when everything is there). Extra package names may be passed as arguments.
 set -euo pipefail
 
 packages=(cmake ninja-build g++ pkg-config ccache clang-format
           libopenimageio-dev libopenexr-dev libeigen3-dev libcli11-dev nlohmann-json3-dev
-          libflann-dev liblz4-dev libgtest-dev libxxhash-dev "$@")
+          libflann-dev liblz4-dev libgtest-dev libxxhash-dev
+          openimageio-tools time jq bc "$@")
 
 missing=()
 for p in "${packages[@]}"; do
