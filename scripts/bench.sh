@@ -144,7 +144,7 @@ report=$(cat <<EOF
 
 Machine: $(hostname), $(nproc) cores, $cpu, $(awk '/MemTotal/ {printf "%.1f GiB", $2 / 1048576}' /proc/meminfo);
 load average $(cut -d' ' -f1-3 /proc/loadavg) when the table was written (the machine is shared: absolute
-times are inflated, the ratios within one run much less so). Command: \`bash scripts/bench.sh$([ $quick = 1 ] && echo " --quick") $build\`
+times are inflated, the ratios within one run much less so). Command: \`$([ -n "${BENCH_VMF_SIZE:-}" ] && echo "BENCH_VMF_SIZE=$BENCH_VMF_SIZE ")bash scripts/bench.sh$([ $quick = 1 ] && echo " --quick") $build\`
 (Release build), medians of $runs interleaved runs, each run going once through every row.
 
 Inputs: \`microbake gen bumps --size N\` (.exr, f32); the crease row adds random straight curves
