@@ -13,20 +13,31 @@
 namespace mbk {
 namespace {
 
-Vec2 texel_center(int64_t t0, int64_t t1) { return Vec2(double(t0) + 0.5, double(t1) + 0.5); }
+constexpr int kK = kGlintSubElementsPerAxis;
+
+// Position of sub-element a (0..K-1) of texel t along one axis: t + (a + 1/2) / K.
+double sub_element_position(int64_t t, int a) { return double(t) + (a + 0.5) / kK; }
 
 int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a - 1) / b) - 1; }
 
-// The separable factor of the element masses along one axis: exp(-(t + 0.5 - c)^2 / (2 (sigma_p^2 + sigma_h^2))).
+// The separable factor of the sub-element masses along one axis, K per texel in order (texel lo's first):
+// exp(-(x - c)^2 / (2 (sigma_p^2 + sigma_h'^2))) at each sub-element position x.
 std::vector<double> axis_weights(int64_t lo, int64_t hi, double c, double sigma_p) {
-  const double var = sigma_p * sigma_p + kGlintElementSigmaTexels * kGlintElementSigmaTexels;
+  const double var = sigma_p * sigma_p + kGlintSubElementSigmaTexels * kGlintSubElementSigmaTexels;
   std::vector<double> w;
-  w.reserve(size_t(hi - lo + 1));
-  for (int64_t t = lo; t <= hi; ++t) {
-    const double d = double(t) + 0.5 - c;
-    w.push_back(std::exp(-0.5 * d * d / var));
-  }
+  w.reserve(size_t(hi - lo + 1) * kK);
+  for (int64_t t = lo; t <= hi; ++t)
+    for (int a = 0; a < kK; ++a) {
+      const double d = sub_element_position(t, a) - c;
+      w.push_back(std::exp(-0.5 * d * d / var));
+    }
   return w;
+}
+
+PositionNormalElement sub_element(const GlintPointQuery& point, int64_t t0, int64_t t1, int a0, int a1) {
+  const Vec2 u(sub_element_position(t0, a0), sub_element_position(t1, a1));
+  const NormalSample q = point.evaluate(u);
+  return {u, q.n, q.jacobian, kGlintSubElementSigmaTexels};
 }
 
 // Index i with probability w_i / sum w, from u in [0, 1) (inversion of the running sum).
@@ -76,9 +87,11 @@ bool GlintPndf::outside(const RmqBounds& b, const Vec2& s) const {
 
 double GlintPndf::element_term(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Vec2& s) const {
   if (outside(range_->element_bounds(t0, t1), s)) return 0.0;
-  const Vec2 u = texel_center(t0, t1);
-  const NormalSample q = range_->point().evaluate(u);
-  return element_footprint_integral({u, q.n, q.jacobian}, footprint, sigma_r_, s);
+  double sum = 0.0;
+  for (int a1 = 0; a1 < kK; ++a1)
+    for (int a0 = 0; a0 < kK; ++a0)
+      sum += element_footprint_integral(sub_element(range_->point(), t0, t1, a0, a1), footprint, sigma_r_, s);
+  return sum;
 }
 
 double GlintPndf::normalizer(const GlintFootprint& footprint, const TexelRange& t) const {
@@ -86,7 +99,7 @@ double GlintPndf::normalizer(const GlintFootprint& footprint, const TexelRange& 
   for (const double w : axis_weights(t.t0_lo, t.t0_hi, footprint.center.x(), footprint.sigma)) sx += w;
   for (const double w : axis_weights(t.t1_lo, t.t1_hi, footprint.center.y(), footprint.sigma)) sy += w;
   // element_footprint_mass at the footprint's centre is the masses' common factor.
-  return element_footprint_mass(footprint.center, footprint, sigma_r_) * sx * sy;
+  return element_footprint_mass(footprint.center, kGlintSubElementSigmaTexels, footprint, sigma_r_) * sx * sy;
 }
 
 double GlintPndf::evaluate_brute_force(const GlintFootprint& footprint, const Vec2& s) const {
@@ -157,16 +170,27 @@ std::optional<Vec2> GlintPndf::sample(const GlintFootprint& footprint, const std
   if (t.empty()) return std::nullopt;
   const std::vector<double> wx = axis_weights(t.t0_lo, t.t0_hi, footprint.center.x(), footprint.sigma);
   const std::vector<double> wy = axis_weights(t.t1_lo, t.t1_hi, footprint.center.y(), footprint.sigma);
-  for (int attempt = 0; attempt < 64; ++attempt) {
-    const int64_t t0 = t.t0_lo + int64_t(pick(wx, uniform()));
-    const int64_t t1 = t.t1_lo + int64_t(pick(wy, uniform()));
-    const Vec2 u = texel_center(t0, t1);
-    const NormalSample q = range_->point().evaluate(u);
-    const Vec2 s =
-        sample_element_normal({u, q.n, q.jacobian}, footprint, sigma_r_, {uniform(), uniform(), uniform(), uniform()});
-    if (!outside(range_->element_bounds(t0, t1), s)) return s;
-  }
+  for (int attempt = 0; attempt < 64; ++attempt)
+    if (const std::optional<Vec2> s = draw(footprint, t, wx, wy, uniform)) return s;
   return std::nullopt;
+}
+
+std::optional<Vec2> GlintPndf::sample_once(const GlintFootprint& footprint,
+                                           const std::function<double()>& uniform) const {
+  const TexelRange t = footprint_texels(footprint);
+  if (t.empty()) return std::nullopt;
+  return draw(footprint, t, axis_weights(t.t0_lo, t.t0_hi, footprint.center.x(), footprint.sigma),
+              axis_weights(t.t1_lo, t.t1_hi, footprint.center.y(), footprint.sigma), uniform);
+}
+
+std::optional<Vec2> GlintPndf::draw(const GlintFootprint& footprint, const TexelRange& t, const std::vector<double>& wx,
+                                    const std::vector<double>& wy, const std::function<double()>& uniform) const {
+  const size_t i0 = pick(wx, uniform()), i1 = pick(wy, uniform());
+  const int64_t t0 = t.t0_lo + int64_t(i0 / kK), t1 = t.t1_lo + int64_t(i1 / kK);
+  const PositionNormalElement e = sub_element(range_->point(), t0, t1, int(i0 % kK), int(i1 % kK));
+  const Vec2 s = sample_element_normal(e, footprint, sigma_r_, {uniform(), uniform(), uniform(), uniform()});
+  if (outside(range_->element_bounds(t0, t1), s)) return std::nullopt;
+  return s;
 }
 
 }  // namespace mbk

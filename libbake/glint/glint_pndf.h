@@ -2,15 +2,17 @@
 // Sec. 4.6, 5.2, 5.3, Algorithm 3): evaluation by the implicit-hierarchy traversal, the brute-force sum it must
 // equal, and importance sampling.
 //
-// Elements: one per target texel t (blended_range.h), centre u_t = t + 0.5, with n_t and J_t from the point
-// query at u_t (blended_normal.h), integrated against the footprint in closed form (position_normal_element.h).
+// Elements: one per target texel t (blended_range.h), evaluated as K x K sub-elements (K =
+// kGlintSubElementsPerAxis, glint_technique.h: why) of spatial sigma_h / K centred at u = t + (a + 1/2) / K,
+// each with n and J from the point query there (blended_normal.h: inside a bilinear cell, never on a kink),
+// integrated against the footprint in closed form (position_normal_element.h).
 // Truncation (the SAME in every evaluation, so that traversal == brute force up to rounding):
 // - footprint: the texels whose centres lie in the square |u_t - c|_inf <= 3 sigma_p (footprint_texels());
 // - normal: element t counts at s only if s lies in its element bounds (blended_range.h: the blend of its four
 //   example texels' leaf intervals, i.e. the reach n +/- |J| 3 sigma_h) widened by 4 sigma_r per component;
 // - position: the element's Gaussian is integrated over the whole plane (the 3 sigma_h spatial cut-off only
 //   sizes the leaf intervals).
-// Normalisation: D_P(s) = sum_t k_t(s) / sum_t m_t over the footprint's texels, i.e. the untruncated D_P would
+// Normalisation: D_P(s) = sum k(s) / sum m over the footprint's sub-elements, i.e. the untruncated D_P would
 // integrate to exactly 1 over s; the normal truncation removes the mass beyond 4 sigma_r (< 1e-4).
 //
 // Traversal (Algorithm 3 with [Wang20] Sec. 5.2): the footprint's texel rectangle is split at target patch
@@ -22,15 +24,16 @@
 // footprint's own rectangles halved, so no node reads texels outside the footprint (same result, fewer
 // range queries).
 //
-// Sampling ([Wang20] Sec. 5.3): an element is picked with probability m_t / sum m (m_t is separable in t_0,
-// t_1, so two 1-D inversions), a normal is drawn from k_t / m_t, and the draw restarts when that normal lies
-// outside the element's truncation box: the samples' density is then exactly proportional to D_P.
+// Sampling ([Wang20] Sec. 5.3): a sub-element is picked with probability m / sum m (m is separable in the two
+// axes, so two 1-D inversions), a normal is drawn from k / m, and the draw restarts when that normal lies
+// outside its texel's truncation box: the samples' density is then exactly proportional to D_P.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <vector>
 
 #include "libbake/glint/blended_range.h"
 #include "libbake/glint/position_normal_element.h"
@@ -74,12 +77,17 @@ class GlintPndf {
   // A normal drawn with density D_P (rules above), from `uniform` (numbers in [0, 1)); nullopt when the
   // footprint holds no texel centre, or after 64 rejected draws in a row (never seen in the tests).
   std::optional<Vec2> sample(const GlintFootprint& footprint, const std::function<double()>& uniform) const;
+  // One draw of the untruncated elements: a normal with density D_P when it lands inside its element's box,
+  // else nullopt, so the fraction of draws that return a normal is D_P's integral (what truncation keeps).
+  std::optional<Vec2> sample_once(const GlintFootprint& footprint, const std::function<double()>& uniform) const;
 
  private:
   double element_term(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Vec2& s) const;
   bool outside(const RmqBounds& b, const Vec2& s) const;
   double normalizer(const GlintFootprint& footprint, const TexelRange& texels) const;
   double traverse(const TargetNode& node, const GlintFootprint& footprint, const Vec2& s, PndfStatistics& stats) const;
+  std::optional<Vec2> draw(const GlintFootprint& footprint, const TexelRange& t, const std::vector<double>& wx,
+                           const std::vector<double>& wy, const std::function<double()>& uniform) const;
 
   const GlintRangeQuery* range_;
   double sigma_r_;
