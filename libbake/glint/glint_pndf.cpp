@@ -56,8 +56,10 @@ size_t pick(const std::vector<double>& w, double u) {
 
 TexelRange footprint_texels(const GlintFootprint& footprint) {
   const double s = footprint.sigma;
-  if (!(std::isfinite(s) && s > 0.0) || !std::isfinite(footprint.center.x()) || !std::isfinite(footprint.center.y()))
-    throw Error(ExitCode::invalid_input, "P-NDF footprint needs a finite centre and a finite sigma > 0", "P-NDF");
+  if (!(std::isfinite(s) && s > 0.0) || !std::isfinite(footprint.center.x()) || !std::isfinite(footprint.center.y()) ||
+      !(std::isfinite(footprint.normal_spread) && footprint.normal_spread >= 0.0))
+    throw Error(ExitCode::invalid_input,
+                "P-NDF footprint needs a finite centre, a finite sigma > 0 and a finite normal spread >= 0", "P-NDF");
   const double r = kGlintFootprintCutoffSigmas * s;
   constexpr double kLimit = 4.0e18;  // the texel indices must fit in int64 with room for patch arithmetic
   const Vec2& c = footprint.center;
@@ -80,17 +82,22 @@ GlintPndf::GlintPndf(const GlintRangeQuery& range, double sigma_r) : range_(&ran
     throw Error(ExitCode::invalid_input, "P-NDF intrinsic roughness must be finite and > 0", "P-NDF");
 }
 
-bool GlintPndf::outside(const RmqBounds& b, const Vec2& s) const {
-  const double m = kGlintNormalCutoffSigmas * sigma_r_;
+double GlintPndf::normal_sigma(const GlintFootprint& footprint) const {
+  return std::sqrt(sigma_r_ * sigma_r_ + footprint.normal_spread * footprint.normal_spread);
+}
+
+bool GlintPndf::outside(const RmqBounds& b, const Vec2& s, double sigma) const {
+  const double m = kGlintNormalCutoffSigmas * sigma;
   return s.x() < b.min_x - m || s.x() > b.max_x + m || s.y() < b.min_y - m || s.y() > b.max_y + m;
 }
 
 double GlintPndf::element_term(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Vec2& s) const {
-  if (outside(range_->element_bounds(t0, t1), s)) return 0.0;
+  const double sigma = normal_sigma(footprint);
+  if (outside(range_->element_bounds(t0, t1), s, sigma)) return 0.0;
   double sum = 0.0;
   for (int a1 = 0; a1 < kK; ++a1)
     for (int a0 = 0; a0 < kK; ++a0)
-      sum += element_footprint_integral(sub_element(range_->point(), t0, t1, a0, a1), footprint, sigma_r_, s);
+      sum += element_footprint_integral(sub_element(range_->point(), t0, t1, a0, a1), footprint, sigma, s);
   return sum;
 }
 
@@ -99,7 +106,8 @@ double GlintPndf::normalizer(const GlintFootprint& footprint, const TexelRange& 
   for (const double w : axis_weights(t.t0_lo, t.t0_hi, footprint.center.x(), footprint.sigma)) sx += w;
   for (const double w : axis_weights(t.t1_lo, t.t1_hi, footprint.center.y(), footprint.sigma)) sy += w;
   // element_footprint_mass at the footprint's centre is the masses' common factor.
-  return element_footprint_mass(footprint.center, kGlintSubElementSigmaTexels, footprint, sigma_r_) * sx * sy;
+  return element_footprint_mass(footprint.center, kGlintSubElementSigmaTexels, footprint, normal_sigma(footprint)) *
+         sx * sy;
 }
 
 double GlintPndf::evaluate_brute_force(const GlintFootprint& footprint, const Vec2& s) const {
@@ -123,7 +131,7 @@ double GlintPndf::traverse(const TargetNode& node, const GlintFootprint& footpri
   uint32_t lookups = 0;
   const RmqBounds b = range_->node_bounds(node, &lookups);
   stats.rmq_lookups += lookups;
-  if (outside(b, s)) return 0.0;
+  if (outside(b, s, normal_sigma(footprint))) return 0.0;
   const uint32_t w0 = (node.width + 1) / 2, h0 = (node.height + 1) / 2;
   double sum = 0.0;
   for (int qy = 0; qy < 2; ++qy)
@@ -188,8 +196,9 @@ std::optional<Vec2> GlintPndf::draw(const GlintFootprint& footprint, const Texel
   const size_t i0 = pick(wx, uniform()), i1 = pick(wy, uniform());
   const int64_t t0 = t.t0_lo + int64_t(i0 / kK), t1 = t.t1_lo + int64_t(i1 / kK);
   const PositionNormalElement e = sub_element(range_->point(), t0, t1, int(i0 % kK), int(i1 % kK));
-  const Vec2 s = sample_element_normal(e, footprint, sigma_r_, {uniform(), uniform(), uniform(), uniform()});
-  if (outside(range_->element_bounds(t0, t1), s)) return std::nullopt;
+  const double sigma = normal_sigma(footprint);
+  const Vec2 s = sample_element_normal(e, footprint, sigma, {uniform(), uniform(), uniform(), uniform()});
+  if (outside(range_->element_bounds(t0, t1), s, sigma)) return std::nullopt;
   return s;
 }
 

@@ -22,10 +22,10 @@
 //   shared with `validate`), formats/lut_lookup.h (the one lookup convention: KnotInterpolant),
 //   formats/standardization_lut.h (the knots of an asset, as the evaluator reads them).
 // - RMQ min/max tables (`microbake rmq`, asset kind `rmq`, id 3; [Wang20] Sec. 4.4, 5.1, Alg. 1-2):
-//   example_jacobian.h (the per-texel Jacobian), element_normal_bounds.h (leaf intervals: the element's
-//   reach), rmq_table.h (the sparse table, quantized; its deviations), rmq_asset.h (the bake); the layout, the
-//   conservative quantizer and the O(1) rectangle query the evaluator uses live in formats/ (rmq_layout.h,
-//   rmq_quantization.h, rmq_query.h), which is all a renderer needs to read the asset.
+//   element_normal_bounds.h (leaf intervals: the reach of a texel's sub-elements), rmq_table.h (the sparse table,
+//   quantized; its deviations), rmq_asset.h (the bake); the layout, the conservative quantizer and the O(1) rectangle
+//   query the evaluator uses live in formats/ (rmq_layout.h, rmq_quantization.h, rmq_query.h), which is all a renderer
+//   needs to read the asset.
 // - Point query of the infinite microstructure ([Wang20] Sec. 4.2, Eqs. 4-6, appendix A.2): target_patch_grid.h
 //   (target patches of side P / 2, example patches of side P chosen by an integer hash of the grid vertex,
 //   bilinear weights), example_bilinear.h (the example read bilinearly between texel centres, clipped at the
@@ -51,8 +51,8 @@
 //   cut-off 3 sigma_h, normal cut-off 4 sigma_r (sigma_r, the intrinsic roughness, is applied at query time,
 //   never baked), Gaussian pixel footprint cut-off 3 sigma. The P-NDF evaluates each texel's element as 2 x 2
 //   sub-elements of sigma_h / 2 (deviation below), truncated by the texel's element box.
-// - Per-texel Jacobian J = d(n_x, n_y) / d(x, y) in texel units, by central differences of the example
-//   (one-sided at the borders); a texel's element spans n +/- (|dn/dx| + |dn/dy|) * 3 sigma_h per component.
+// - Sub-element Jacobians J = d(n_x, n_y) / d(x, y) in texel units are the bilinear field's own, inside a cell;
+//   a texel's element box (RMQ leaf) holds its four sub-elements (element_normal_bounds.h).
 // - Standardization ([Heitz18] Sec. 3): the Gaussian is the STANDARD normal N(0, 1). [Heitz18] use mean 0.5
 //   and standard deviation 1/6; the two differ by an affine map, which the variance-preserving blend
 //   ([Wang20] Eq. 5) commutes with, so blended results are identical.

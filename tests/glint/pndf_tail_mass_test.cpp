@@ -157,9 +157,8 @@ NormalMap top_left(const NormalMap& map, uint32_t side) {
 }
 
 TEST(GlintPndfTailMass, RealMaps) {
-  const int seen = test::for_each_real_normal_map([](const NormalMap& map, const std::string& name) {
-    expect_tail_mass_kept(top_left(map, 256), name, {0.01});
-  });
+  const int seen = test::for_each_real_normal_map(
+      [](const NormalMap& map, const std::string& name) { expect_tail_mass_kept(top_left(map, 256), name, {0.01}); });
   if (seen == 0) GTEST_SKIP() << "no real normal maps in " << MICROBAKE_REAL_DATA_DIR;
 }
 
