@@ -119,19 +119,51 @@ double GlintPndf::evaluate_brute_force(const GlintFootprint& footprint, const Ve
   return sum / normalizer(footprint, t);
 }
 
-double GlintPndf::traverse(const TargetNode& node, const GlintFootprint& footprint, const Vec2& s,
-                           PndfStatistics& stats) const {
+struct GlintPndf::Query {
+  const GlintFootprint& footprint;
+  Vec2 s;
+  double sigma;
+  TexelRange texels;
+  bool aggregate;
+  // Running sums of the sub-element axis weights (axis_weights), K per texel, from the footprint's first texel;
+  // filled only when aggregating.
+  std::vector<double> prefix_x, prefix_y;
+  double common = 0.0;  // element_footprint_mass at the footprint's centre: the masses' common factor
+};
+
+namespace {
+
+std::vector<double> running_sums(const std::vector<double>& w) {
+  std::vector<double> out(w.size() + 1, 0.0);
+  for (size_t i = 0; i < w.size(); ++i) out[i + 1] = out[i] + w[i];
+  return out;
+}
+
+}  // namespace
+
+double GlintPndf::traverse(const TargetNode& node, const Query& q, PndfStatistics& stats) const {
   ++stats.nodes_visited;
   const int64_t h = range_->target_side();
   if (node.width == 1 && node.height == 1) {
-    const double v = element_term(node.patch_i * h + node.x0, node.patch_j * h + node.y0, footprint, s);
+    const double v = element_term(node.patch_i * h + node.x0, node.patch_j * h + node.y0, q.footprint, q.s);
     if (v != 0.0) ++stats.elements_evaluated;
     return v;
   }
   uint32_t lookups = 0;
   const RmqBounds b = range_->node_bounds(node, &lookups);
   stats.rmq_lookups += lookups;
-  if (outside(b, s, normal_sigma(footprint))) return 0.0;
+  if (outside(b, q.s, q.sigma)) return 0.0;
+  const double narrow = kGlintAggregateWidthSigmas * q.sigma;
+  if (q.aggregate && b.max_x - b.min_x <= narrow && b.max_y - b.min_y <= narrow) {
+    ++stats.nodes_aggregated;
+    const int64_t x = (node.patch_i * h + node.x0 - q.texels.t0_lo) * kK;
+    const int64_t y = (node.patch_j * h + node.y0 - q.texels.t1_lo) * kK;
+    const double mass = q.common * (q.prefix_x[size_t(x + node.width * kK)] - q.prefix_x[size_t(x)]) *
+                        (q.prefix_y[size_t(y + node.height * kK)] - q.prefix_y[size_t(y)]);
+    const Vec2 c(0.5 * (b.min_x + b.max_x), 0.5 * (b.min_y + b.max_y));
+    const double var = q.sigma * q.sigma;
+    return mass * std::exp(-0.5 * (q.s - c).squaredNorm() / var) / (2.0 * std::numbers::pi * var);
+  }
   const uint32_t w0 = (node.width + 1) / 2, h0 = (node.height + 1) / 2;
   double sum = 0.0;
   for (int qy = 0; qy < 2; ++qy)
@@ -141,14 +173,21 @@ double GlintPndf::traverse(const TargetNode& node, const GlintFootprint& footpri
       child.width = qx ? node.width - w0 : w0;
       child.y0 = node.y0 + (qy ? h0 : 0);
       child.height = qy ? node.height - h0 : h0;
-      if (child.width > 0 && child.height > 0) sum += traverse(child, footprint, s, stats);
+      if (child.width > 0 && child.height > 0) sum += traverse(child, q, stats);
     }
   return sum;
 }
 
-double GlintPndf::evaluate(const GlintFootprint& footprint, const Vec2& s, PndfStatistics* stats) const {
+double GlintPndf::evaluate(const GlintFootprint& footprint, const Vec2& s, PndfStatistics* stats,
+                           bool aggregate) const {
   const TexelRange t = footprint_texels(footprint);
   if (t.empty()) return 0.0;
+  Query q{footprint, s, normal_sigma(footprint), t, aggregate, {}, {}};
+  if (aggregate) {
+    q.prefix_x = running_sums(axis_weights(t.t0_lo, t.t0_hi, footprint.center.x(), footprint.sigma));
+    q.prefix_y = running_sums(axis_weights(t.t1_lo, t.t1_hi, footprint.center.y(), footprint.sigma));
+    q.common = element_footprint_mass(footprint.center, kGlintSubElementSigmaTexels, footprint, q.sigma);
+  }
   PndfStatistics local;
   const int64_t h = range_->target_side();
   double sum = 0.0;
@@ -163,12 +202,13 @@ double GlintPndf::evaluate(const GlintFootprint& footprint, const Vec2& s, PndfS
                             uint32_t(y_lo - pj * h),
                             uint32_t(x_hi - x_lo + 1),
                             uint32_t(y_hi - y_lo + 1)};
-      sum += traverse(root, footprint, s, local);
+      sum += traverse(root, q, local);
     }
   if (stats) {
     stats->nodes_visited += local.nodes_visited;
     stats->elements_evaluated += local.elements_evaluated;
     stats->rmq_lookups += local.rmq_lookups;
+    stats->nodes_aggregated += local.nodes_aggregated;
   }
   return sum / normalizer(footprint, t);
 }

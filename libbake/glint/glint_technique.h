@@ -100,6 +100,9 @@ inline constexpr double kGlintElementSigmaTexels = 0.43301270189221935;
 // The P-NDF splits each texel's element into K x K sub-elements of spatial sigma kGlintElementSigmaTexels / K,
 // centred at t + (a + 1/2) / K (a = 0..K-1 per axis), each linearized where it sits (glint_pndf.h).
 inline constexpr int kGlintSubElementsPerAxis = 2;
+// The aggregated traversal (glint_pndf.h) sums a node in closed form when its bounds are at most this many
+// sigma wide in both components.
+inline constexpr double kGlintAggregateWidthSigmas = 0.01;
 inline constexpr double kGlintSubElementSigmaTexels = kGlintElementSigmaTexels / kGlintSubElementsPerAxis;
 // Truncation radii, in standard deviations: spatial (element), normal (intrinsic roughness), pixel footprint.
 inline constexpr double kGlintSpatialCutoffSigmas = 3.0;
