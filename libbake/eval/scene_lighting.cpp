@@ -2,6 +2,7 @@
 #include "libbake/eval/scene_lighting.h"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "libbake/image/image_io.h"
@@ -33,17 +34,19 @@ Vec3 facing_viewer(const Vec3& n, const Vec3& v) {
 }
 
 void for_each_direct_light(const SceneLighting& lighting, const Vec3& position, const Vec3& geometric_normal,
-                           const std::function<void(const Vec3& l, const Vec3& e)>& light) {
-  const auto visit = [&](const Vec3& l, const Vec3& e) {
-    if (geometric_normal.dot(l) > 0.0) light(l, e);  // else below the surface's own horizon
+                           const std::function<void(const Vec3& l, const Vec3& e, double distance)>& light) {
+  const auto visit = [&](const Vec3& l, const Vec3& e, double distance) {
+    if (geometric_normal.dot(l) > 0.0) light(l, e, distance);  // else below the surface's own horizon
   };
   for (const auto& p : lighting.points) {
     const Vec3 to_light = p.position - position;
     const double d2 = to_light.squaredNorm();
     if (!(d2 > 0.0)) continue;  // a light exactly on the surface has no direction
-    visit(to_light / std::sqrt(d2), p.intensity / d2);
+    const double d = std::sqrt(d2);
+    visit(to_light / d, p.intensity / d2, d);
   }
-  for (const auto& d : lighting.directionals) visit(-d.direction, d.irradiance);
+  for (const auto& d : lighting.directionals)
+    visit(-d.direction, d.irradiance, std::numeric_limits<double>::infinity());
 }
 
 Vec3 distant_specular(const SceneLighting& lighting, const Vec3& f0, const Vec3& n, const Vec3& v, double alpha) {
@@ -57,7 +60,7 @@ Vec3 distant_specular(const SceneLighting& lighting, const Vec3& f0, const Vec3&
 Vec3 shade(const SceneLighting& lighting, const Brdf& brdf, const ShadingPoint& point) {
   const Vec3 n = facing_viewer(point.normal, point.to_viewer);
   Vec3 radiance = Vec3::Zero();
-  for_each_direct_light(lighting, point.position, point.geometric_normal, [&](const Vec3& l, const Vec3& e) {
+  for_each_direct_light(lighting, point.position, point.geometric_normal, [&](const Vec3& l, const Vec3& e, double) {
     const double cos_l = n.dot(l);
     if (cos_l > 0.0) radiance += evaluate_brdf(brdf, n, l, point.to_viewer).cwiseProduct(e) * cos_l;
   });

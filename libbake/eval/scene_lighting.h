@@ -40,11 +40,12 @@ struct ShadingPoint {
 
 // The shading normal actually used: `normal`, bent towards the viewer when n . v < 0.01 (see above).
 Vec3 facing_viewer(const Vec3& normal, const Vec3& to_viewer);
-// Calls light(l, e) for every point and directional light above the geometric horizon at `position`
-// (n_g . l > 0): l the unit direction towards the light, e its irradiance on a surface facing it. The
-// shading normal's horizon is the caller's (shade() and the filtered-NDF shaders test it their way).
+// Calls light(l, e, distance) for every point and directional light above the geometric horizon at `position`
+// (n_g . l > 0): l the unit direction towards the light, e its irradiance on a surface facing it, distance
+// the light's (infinity for a directional light). The shading normal's horizon is the caller's (shade() and
+// the filtered-NDF shaders test it their way).
 void for_each_direct_light(const SceneLighting& lighting, const Vec3& position, const Vec3& geometric_normal,
-                           const std::function<void(const Vec3& l, const Vec3& e)>& light);
+                           const std::function<void(const Vec3& l, const Vec3& e, double distance)>& light);
 // The distant lighting's specular around the unit normal n (already facing the viewer) for microfacet
 // roughness alpha: F_Schlick(f0, n.v) times the vMF lobe of kappa = 1 / (2 alpha^2) at the mirror direction
 // (sh_lighting.h). Zero without distant lights.

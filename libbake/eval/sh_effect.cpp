@@ -74,7 +74,7 @@ class ShNdfShader : public MaterialShader {
         clamp_filtered_alpha(brdf.lobe.alpha, toksvig_beckmann_alpha(brdf.lobe.alpha, std::min(1.0, len)));
 
     Vec3 out = Vec3::Zero();
-    for_each_direct_light(*c.lighting, c.position, f.N, [&](const Vec3& l, const Vec3& e) {
+    for_each_direct_light(*c.lighting, c.position, f.N, [&](const Vec3& l, const Vec3& e, double) {
       const double diffuse = std::max(0.0, sh_filtered_brdf(basis_, g, window, rhat_diffuse_, to_tangent(l)));
       const Vec3 specular = evaluate_specular(spread, n, l, c.to_viewer, [&](const Vec3& h) {
         return std::max(0.0, sh_filtered_brdf(basis_, g, window, rhat_specular_, to_tangent(h)));

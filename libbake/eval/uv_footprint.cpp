@@ -30,7 +30,11 @@ Vec3 transfer(const SurfaceHit& h, const Vec3& D, const Vec3& dD) {
 
 UvFootprint uv_footprint(const SurfaceHit& hit, const RayDifferential& ray) {
   const Vec3& D = ray.ray.direction;
-  return {solve_uv(hit, transfer(hit, D, ray.ddx)), solve_uv(hit, transfer(hit, D, ray.ddy))};
+  const Vec3 dp_dx = transfer(hit, D, ray.ddx), dp_dy = transfer(hit, D, ray.ddy);
+  const double length = D.norm();
+  const Vec3 d = D / length;
+  const auto view_step = [&](const Vec3& dD) -> Vec3 { return -(dD - d * d.dot(dD)) / length; };
+  return {solve_uv(hit, dp_dx), solve_uv(hit, dp_dy), dp_dx, dp_dy, view_step(ray.ddx), view_step(ray.ddy)};
 }
 
 double mip_lod(const UvFootprint& f, uint32_t map_width, uint32_t map_height) {

@@ -18,6 +18,11 @@ namespace mbk {
 
 struct UvFootprint {
   Vec2 duv_dx = Vec2::Zero(), duv_dy = Vec2::Zero();
+  // The same pixel steps in world space: the hit point's dp/dx, dp/dy (Igehy Eq. 10, above) and the unit
+  // direction to the viewer's, d(-D/|D|)/dx = -(dD/dx - d (d . dD/dx)) / |D| with d = D/|D| (pinhole: the
+  // viewer does not move). The glints effect turns them into the half vector's sweep over the pixel.
+  Vec3 dp_dx = Vec3::Zero(), dp_dy = Vec3::Zero();
+  Vec3 dview_dx = Vec3::Zero(), dview_dy = Vec3::Zero();
 };
 
 inline constexpr double kMaxLod = 64.0;

@@ -37,7 +37,7 @@ class VmfShader : public MaterialShader {
     }
 
     Vec3 out = Vec3::Zero();
-    for_each_direct_light(*c.lighting, c.position, f.N, [&](const Vec3& l, const Vec3& e) {
+    for_each_direct_light(*c.lighting, c.position, f.N, [&](const Vec3& l, const Vec3& e, double) {
       const double diffuse = std::max(0.0, vmf_filtered_brdf(lobes, filtered, l));  // Eq. (7.14)
       Vec3 specular = Vec3::Zero();
       for (size_t j = 0; j < lobes.size(); ++j)

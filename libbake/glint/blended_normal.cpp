@@ -16,19 +16,23 @@ GlintPointQuery::GlintPointQuery(const NormalMap& example, uint32_t patch_side, 
     throw Error(ExitCode::invalid_input, "point query needs a non-empty example", "point query");
   if (mode == GlintBlendMode::histogram && lut == nullptr)
     throw Error(ExitCode::invalid_input, "histogram blending needs the example's standardization LUT", "point query");
+  channels_ = normal_components(example);
   Vec2 sum = Vec2::Zero();  // serial, in texel order: deterministic
-  for (const Vec3f& t : example.texels) sum += Vec2(t.x(), t.y());
-  mean_ = sum / double(example.texels.size());
+  for (const Vec2& t : channels_.texels) sum += t;
+  mean_ = sum / double(channels_.texels.size());
+  if (mode == GlintBlendMode::histogram)
+    for (Vec2& t : channels_.texels)
+      for (int ch = 0; ch < 2; ++ch) t[ch] = lut->channels[ch].standardize(t[ch]).value;
 }
 
 NormalSample GlintPointQuery::evaluate(const Vec2& u) const {
   const TargetPatchLocation loc = grid_.locate(u);
   if (mode_ == GlintBlendMode::none) {
     const int k = (loc.local.x() >= 0.5 ? 1 : 0) + (loc.local.y() >= 0.5 ? 2 : 0);
-    return sample_example_bilinear(*example_, loc.corners[k].example_point);
+    return sample_example_bilinear(channels_, loc.corners[k].example_point);
   }
   std::array<NormalSample, 4> s;
-  for (int k = 0; k < 4; ++k) s[k] = sample_example_bilinear(*example_, loc.corners[k].example_point);
+  for (int k = 0; k < 4; ++k) s[k] = sample_example_bilinear(channels_, loc.corners[k].example_point);
 
   double w_norm2 = 0.0;
   Vec2 w_norm2_half_gradient = Vec2::Zero();  // sum w_k dw_k = d(W^2)/2
@@ -41,18 +45,13 @@ NormalSample GlintPointQuery::evaluate(const Vec2& u) const {
 
   NormalSample out;
   for (int ch = 0; ch < 2; ++ch) {
-    // The blended channel before any final transform: values v_k (I_k, or G(I_k)) with gradients dv_k.
+    // The blended channel before any final transform: values v_k (I_k, or Z_k) with gradients dv_k.
     double L = 0.0;
     Vec2 dL = Vec2::Zero();
     for (int k = 0; k < 4; ++k) {
       const TargetPatchCorner& c = loc.corners[k];
-      double v = s[k].n[ch];
-      Vec2 dv = s[k].jacobian.row(ch).transpose();
-      if (mode_ == GlintBlendMode::histogram) {
-        const LutSample g = lut_->channels[ch].standardize(v);
-        v = g.value;
-        dv *= g.derivative;
-      }
+      const double v = s[k].n[ch];
+      const Vec2 dv = s[k].jacobian.row(ch).transpose();
       L += c.weight * v;
       dL += c.weight_gradient * v + c.weight * dv;
     }

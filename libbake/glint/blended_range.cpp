@@ -6,7 +6,6 @@
 #include <string>
 
 #include "formats/error.h"
-#include "libbake/glint/element_normal_bounds.h"
 
 namespace mbk {
 namespace {
@@ -137,7 +136,7 @@ RmqBounds GlintRangeQuery::element_bounds(int64_t t0, int64_t t1) const {
   std::array<RmqBounds, 4> corner;
   for (int k = 0; k < 4; ++k) {
     const std::array<uint32_t, 2> e = example_texel(i, j, k, x, y);
-    corner[k] = element_normal_bounds(point_->example(), e[0], e[1]);
+    corner[k] = rmq_->query(e[0], e[1], 1, 1);
   }
   const Vec2 f((x + 0.5) / double(h), (y + 0.5) / double(h));
   return blend_range_bounds(point_->mode(), f, f, corner, point_->example_mean(), point_->lut());

@@ -31,11 +31,14 @@
 // Every bound is finally widened by kGlintRangeRoundingMargin, so that double rounding (one corner evaluation
 // against another, the LUTs' piecewise-linear steps) can never put a texel's value an ulp outside its node.
 //
-// The element bounds of one texel are the same blend of the EXACT (unquantized) leaf intervals of its four
-// example texels at its own weights (a degenerate box): the normal box its element reaches. The P-NDF truncates
-// an element at that box widened by the normal cut-off, and since the node bounds contain every texel's element
-// bounds (quantization only widens them, the weight box contains each centre), pruning a node never drops a
-// contributing element: the traversal equals brute force (glint_pndf.h).
+// The element bounds of one texel are the same blend of the STORED leaf intervals of its four example texels
+// (the table's level 0, as quantized) at its own weights (a degenerate box): the normal box its element
+// reaches. The P-NDF truncates an element at that box widened by the normal cut-off, and since the node bounds
+// contain every texel's element bounds (a square's stored minimum is the minimum of its leaves' stored minima:
+// outward rounding is monotone; the weight box contains each centre), pruning a node never drops a
+// contributing element: the traversal equals brute force (glint_pndf.h). Reading the leaves from the table,
+// not recomputing them from the example, keeps element and node bounds one definition whatever microbake
+// version baked the table.
 #pragma once
 
 #include <array>
@@ -76,7 +79,7 @@ class GlintRangeQuery {
   // Conservative bounds of every element of the node (RMQ ranges, rules above). `lookups`, when given,
   // receives the number of stored squares read.
   RmqBounds node_bounds(const TargetNode& node, uint32_t* lookups = nullptr) const;
-  // The exact element bounds of target texel (t_0, t_1).
+  // The element bounds of target texel (t_0, t_1) (rules above).
   RmqBounds element_bounds(int64_t t0, int64_t t1) const;
 
  private:

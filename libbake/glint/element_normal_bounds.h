@@ -1,18 +1,24 @@
 // The leaf intervals of the RMQ table: the box of normal components that one example texel's
 // position-normal element reaches, not only its centre normal (libbake/glint/glint_technique.h).
 //
-// Texel i's element ([Yan16], [Wang20] Sec. 3.1) is n(u) = n_i + J_i (u - u_i) over the spatial cut-off
-// |u - u_i| <= 3 sigma_h per axis (sigma_h = 1.5 / sqrt(12) texels). Over that square, component c ranges
-// exactly over
+// Texel i's element ([Yan16], [Wang20] Sec. 3.1) is evaluated as K x K sub-elements (K =
+// kGlintSubElementsPerAxis, glint_technique.h): sub-element q sits at the texel's point u_q = u_i + (a + 1/2) / K
+// - 1/2 per axis, inside one bilinear cell of the example (example_bilinear.h), and is the bilinear field
+// linearized there, n_q + J_q (u - u_q), over its cut-off |u - u_q| <= 3 sigma_h / K per axis. With D_c^x the
+// largest |difference| of component c between horizontally adjacent texels of the 3 x 3 block around i
+// (texels outside the example skipped: the reader clamps, so those differences are 0) and D_c^y likewise
+// vertically, the bilinear field gives |n_q,c - n_i,c| <= |u_q - u_i|_x D_c^x + |u_q - u_i|_y D_c^y and
+// |J_q,c0| <= D_c^x, |J_q,c1| <= D_c^y, so every sub-element stays inside
 //
-//   n_c +/- (|J_c0| + |J_c1|) * 3 sigma_h                      (J from example_jacobian.h)
+//   n_c +/- (D_c^x + D_c^y) * (1 / 2 - 1 / (2 K) + 3 sigma_h / K)        (0.8995 (D^x + D^y) for K = 2)
 //
-// (the extreme of a linear function over a square is at a corner). This also bounds the element over the
-// disc |u - u_i| <= 3 sigma_h, so the interval is conservative whichever cut-off shape a renderer uses.
-// The intrinsic roughness sigma_r is applied at query time and is not in the interval. No clamping to
-// [-1, 1]: the linear element leaves the unit disc near the horizon, and the P-NDF evaluates that element.
+// the leaf interval. This also bounds each sub-element over the disc of that radius, so the interval is
+// conservative whichever cut-off shape a renderer uses. The intrinsic roughness sigma_r is applied at query
+// time and is not in the interval. No clamping to [-1, 1]: linear elements leave the unit disc near the
+// horizon, and the P-NDF evaluates them. The leaf does not bound the part of a blended element that comes from
+// the blend weights' gradient (blended_range.h).
 // Deviation [Wang20]: Algorithm 1's leaf is the texel's normal itself, so a range query could prune texels
-// whose elements still reach the half vector (test: ElementNormalBounds.SpreadIsJacobianTimesCutoff).
+// whose elements still reach the half vector (test: ElementNormalBounds.ContainsEverySubElement).
 #pragma once
 
 #include <cstdint>
@@ -22,7 +28,7 @@
 
 namespace mbk {
 
-// The half-widths of the interval, (|J_x0| + |J_x1|, |J_y0| + |J_y1|) * 3 sigma_h.
+// The half-widths of the interval for n_x and n_y: (D^x + D^y) * (1/2 - 1/(2K) + 3 sigma_h / K) (above).
 Vec2 element_normal_reach(const NormalMap& example, uint32_t x, uint32_t row);
 // The interval of n_x and n_y (the same bounds type as an RMQ query's answer) from the texel's normal and reach.
 RmqBounds element_normal_bounds(const Vec3f& normal, const Vec2& reach);

@@ -1,6 +1,8 @@
 // Reading the example at a continuous point for the point query ([Wang20] Sec. 4.2): bilinear interpolation of
-// the normal components n_x, n_y between texel centres, CLIPPED at the border (glint_technique.h: the example
-// is not tileable), with its exact 2x2 derivative.
+// two channels between texel centres, CLIPPED at the border (glint_technique.h: the example is not tileable),
+// with its exact 2x2 derivative. The channels are the normal components n_x, n_y, or, for histogram-preserving
+// blending, their standardized values G(n_x), G(n_y) ([Heitz18] Sec. 3: the example is standardized texel by
+// texel, and the Gaussian example is what is interpolated; blended_normal.h).
 //
 // Point e = (e_0, e_1) in texel units along (x, row); texel (x, row) has its centre at (x + 0.5, row + 0.5).
 // With t = e - 0.5, x0 = floor(t_0), f = t_0 - x0 (likewise along rows), the four texels x0, x0 + 1 (rows
@@ -12,10 +14,22 @@
 // side (floor) gives the one-sided derivative.
 #pragma once
 
+#include <cstdint>
+#include <vector>
+
 #include "libbake/core/eigen.h"
 #include "libbake/image/normal_map.h"
 
 namespace mbk {
+
+// Two channels per texel, row-major like NormalMap (texel (x, row) at index row * width + x).
+struct ExampleChannels {
+  uint32_t width = 0, height = 0;
+  std::vector<Vec2> texels;
+};
+
+// The example's normal components (n_x, n_y) as doubles.
+ExampleChannels normal_components(const NormalMap& example);
 
 struct NormalSample {
   Vec2 n;         // (n_x, n_y)
@@ -23,6 +37,6 @@ struct NormalSample {
 };
 
 // Requires a non-empty example and a finite e (any e: indices clamp).
-NormalSample sample_example_bilinear(const NormalMap& example, const Vec2& e);
+NormalSample sample_example_bilinear(const ExampleChannels& example, const Vec2& e);
 
 }  // namespace mbk

@@ -13,20 +13,31 @@
 namespace mbk {
 namespace {
 
-Vec2 texel_center(int64_t t0, int64_t t1) { return Vec2(double(t0) + 0.5, double(t1) + 0.5); }
+constexpr int kK = kGlintSubElementsPerAxis;
+
+// Position of sub-element a (0..K-1) of texel t along one axis: t + (a + 1/2) / K.
+double sub_element_position(int64_t t, int a) { return double(t) + (a + 0.5) / kK; }
 
 int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a - 1) / b) - 1; }
 
-// The separable factor of the element masses along one axis: exp(-(t + 0.5 - c)^2 / (2 (sigma_p^2 + sigma_h^2))).
+// The separable factor of the sub-element masses along one axis, K per texel in order (texel lo's first):
+// exp(-(x - c)^2 / (2 (sigma_p^2 + sigma_h'^2))) at each sub-element position x.
 std::vector<double> axis_weights(int64_t lo, int64_t hi, double c, double sigma_p) {
-  const double var = sigma_p * sigma_p + kGlintElementSigmaTexels * kGlintElementSigmaTexels;
+  const double var = sigma_p * sigma_p + kGlintSubElementSigmaTexels * kGlintSubElementSigmaTexels;
   std::vector<double> w;
-  w.reserve(size_t(hi - lo + 1));
-  for (int64_t t = lo; t <= hi; ++t) {
-    const double d = double(t) + 0.5 - c;
-    w.push_back(std::exp(-0.5 * d * d / var));
-  }
+  w.reserve(size_t(hi - lo + 1) * kK);
+  for (int64_t t = lo; t <= hi; ++t)
+    for (int a = 0; a < kK; ++a) {
+      const double d = sub_element_position(t, a) - c;
+      w.push_back(std::exp(-0.5 * d * d / var));
+    }
   return w;
+}
+
+PositionNormalElement sub_element(const GlintPointQuery& point, int64_t t0, int64_t t1, int a0, int a1) {
+  const Vec2 u(sub_element_position(t0, a0), sub_element_position(t1, a1));
+  const NormalSample q = point.evaluate(u);
+  return {u, q.n, q.jacobian, kGlintSubElementSigmaTexels};
 }
 
 // Index i with probability w_i / sum w, from u in [0, 1) (inversion of the running sum).
@@ -45,8 +56,10 @@ size_t pick(const std::vector<double>& w, double u) {
 
 TexelRange footprint_texels(const GlintFootprint& footprint) {
   const double s = footprint.sigma;
-  if (!(std::isfinite(s) && s > 0.0) || !std::isfinite(footprint.center.x()) || !std::isfinite(footprint.center.y()))
-    throw Error(ExitCode::invalid_input, "P-NDF footprint needs a finite centre and a finite sigma > 0", "P-NDF");
+  if (!(std::isfinite(s) && s > 0.0) || !std::isfinite(footprint.center.x()) || !std::isfinite(footprint.center.y()) ||
+      !(std::isfinite(footprint.normal_spread) && footprint.normal_spread >= 0.0))
+    throw Error(ExitCode::invalid_input,
+                "P-NDF footprint needs a finite centre, a finite sigma > 0 and a finite normal spread >= 0", "P-NDF");
   const double r = kGlintFootprintCutoffSigmas * s;
   constexpr double kLimit = 4.0e18;  // the texel indices must fit in int64 with room for patch arithmetic
   const Vec2& c = footprint.center;
@@ -69,16 +82,23 @@ GlintPndf::GlintPndf(const GlintRangeQuery& range, double sigma_r) : range_(&ran
     throw Error(ExitCode::invalid_input, "P-NDF intrinsic roughness must be finite and > 0", "P-NDF");
 }
 
-bool GlintPndf::outside(const RmqBounds& b, const Vec2& s) const {
-  const double m = kGlintNormalCutoffSigmas * sigma_r_;
+double GlintPndf::normal_sigma(const GlintFootprint& footprint) const {
+  return std::sqrt(sigma_r_ * sigma_r_ + footprint.normal_spread * footprint.normal_spread);
+}
+
+bool GlintPndf::outside(const RmqBounds& b, const Vec2& s, double sigma) const {
+  const double m = kGlintNormalCutoffSigmas * sigma;
   return s.x() < b.min_x - m || s.x() > b.max_x + m || s.y() < b.min_y - m || s.y() > b.max_y + m;
 }
 
 double GlintPndf::element_term(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Vec2& s) const {
-  if (outside(range_->element_bounds(t0, t1), s)) return 0.0;
-  const Vec2 u = texel_center(t0, t1);
-  const NormalSample q = range_->point().evaluate(u);
-  return element_footprint_integral({u, q.n, q.jacobian}, footprint, sigma_r_, s);
+  const double sigma = normal_sigma(footprint);
+  if (outside(range_->element_bounds(t0, t1), s, sigma)) return 0.0;
+  double sum = 0.0;
+  for (int a1 = 0; a1 < kK; ++a1)
+    for (int a0 = 0; a0 < kK; ++a0)
+      sum += element_footprint_integral(sub_element(range_->point(), t0, t1, a0, a1), footprint, sigma, s);
+  return sum;
 }
 
 double GlintPndf::normalizer(const GlintFootprint& footprint, const TexelRange& t) const {
@@ -86,7 +106,8 @@ double GlintPndf::normalizer(const GlintFootprint& footprint, const TexelRange& 
   for (const double w : axis_weights(t.t0_lo, t.t0_hi, footprint.center.x(), footprint.sigma)) sx += w;
   for (const double w : axis_weights(t.t1_lo, t.t1_hi, footprint.center.y(), footprint.sigma)) sy += w;
   // element_footprint_mass at the footprint's centre is the masses' common factor.
-  return element_footprint_mass(footprint.center, footprint, sigma_r_) * sx * sy;
+  return element_footprint_mass(footprint.center, kGlintSubElementSigmaTexels, footprint, normal_sigma(footprint)) *
+         sx * sy;
 }
 
 double GlintPndf::evaluate_brute_force(const GlintFootprint& footprint, const Vec2& s) const {
@@ -98,19 +119,51 @@ double GlintPndf::evaluate_brute_force(const GlintFootprint& footprint, const Ve
   return sum / normalizer(footprint, t);
 }
 
-double GlintPndf::traverse(const TargetNode& node, const GlintFootprint& footprint, const Vec2& s,
-                           PndfStatistics& stats) const {
+struct GlintPndf::Query {
+  const GlintFootprint& footprint;
+  Vec2 s;
+  double sigma;
+  TexelRange texels;
+  bool aggregate;
+  // Running sums of the sub-element axis weights (axis_weights), K per texel, from the footprint's first texel;
+  // filled only when aggregating.
+  std::vector<double> prefix_x, prefix_y;
+  double common = 0.0;  // element_footprint_mass at the footprint's centre: the masses' common factor
+};
+
+namespace {
+
+std::vector<double> running_sums(const std::vector<double>& w) {
+  std::vector<double> out(w.size() + 1, 0.0);
+  for (size_t i = 0; i < w.size(); ++i) out[i + 1] = out[i] + w[i];
+  return out;
+}
+
+}  // namespace
+
+double GlintPndf::traverse(const TargetNode& node, const Query& q, PndfStatistics& stats) const {
   ++stats.nodes_visited;
   const int64_t h = range_->target_side();
   if (node.width == 1 && node.height == 1) {
-    const double v = element_term(node.patch_i * h + node.x0, node.patch_j * h + node.y0, footprint, s);
+    const double v = element_term(node.patch_i * h + node.x0, node.patch_j * h + node.y0, q.footprint, q.s);
     if (v != 0.0) ++stats.elements_evaluated;
     return v;
   }
   uint32_t lookups = 0;
   const RmqBounds b = range_->node_bounds(node, &lookups);
   stats.rmq_lookups += lookups;
-  if (outside(b, s)) return 0.0;
+  if (outside(b, q.s, q.sigma)) return 0.0;
+  const double narrow = kGlintAggregateWidthSigmas * q.sigma;
+  if (q.aggregate && b.max_x - b.min_x <= narrow && b.max_y - b.min_y <= narrow) {
+    ++stats.nodes_aggregated;
+    const int64_t x = (node.patch_i * h + node.x0 - q.texels.t0_lo) * kK;
+    const int64_t y = (node.patch_j * h + node.y0 - q.texels.t1_lo) * kK;
+    const double mass = q.common * (q.prefix_x[size_t(x + node.width * kK)] - q.prefix_x[size_t(x)]) *
+                        (q.prefix_y[size_t(y + node.height * kK)] - q.prefix_y[size_t(y)]);
+    const Vec2 c(0.5 * (b.min_x + b.max_x), 0.5 * (b.min_y + b.max_y));
+    const double var = q.sigma * q.sigma;
+    return mass * std::exp(-0.5 * (q.s - c).squaredNorm() / var) / (2.0 * std::numbers::pi * var);
+  }
   const uint32_t w0 = (node.width + 1) / 2, h0 = (node.height + 1) / 2;
   double sum = 0.0;
   for (int qy = 0; qy < 2; ++qy)
@@ -120,14 +173,21 @@ double GlintPndf::traverse(const TargetNode& node, const GlintFootprint& footpri
       child.width = qx ? node.width - w0 : w0;
       child.y0 = node.y0 + (qy ? h0 : 0);
       child.height = qy ? node.height - h0 : h0;
-      if (child.width > 0 && child.height > 0) sum += traverse(child, footprint, s, stats);
+      if (child.width > 0 && child.height > 0) sum += traverse(child, q, stats);
     }
   return sum;
 }
 
-double GlintPndf::evaluate(const GlintFootprint& footprint, const Vec2& s, PndfStatistics* stats) const {
+double GlintPndf::evaluate(const GlintFootprint& footprint, const Vec2& s, PndfStatistics* stats,
+                           bool aggregate) const {
   const TexelRange t = footprint_texels(footprint);
   if (t.empty()) return 0.0;
+  Query q{footprint, s, normal_sigma(footprint), t, aggregate, {}, {}};
+  if (aggregate) {
+    q.prefix_x = running_sums(axis_weights(t.t0_lo, t.t0_hi, footprint.center.x(), footprint.sigma));
+    q.prefix_y = running_sums(axis_weights(t.t1_lo, t.t1_hi, footprint.center.y(), footprint.sigma));
+    q.common = element_footprint_mass(footprint.center, kGlintSubElementSigmaTexels, footprint, q.sigma);
+  }
   PndfStatistics local;
   const int64_t h = range_->target_side();
   double sum = 0.0;
@@ -142,12 +202,13 @@ double GlintPndf::evaluate(const GlintFootprint& footprint, const Vec2& s, PndfS
                             uint32_t(y_lo - pj * h),
                             uint32_t(x_hi - x_lo + 1),
                             uint32_t(y_hi - y_lo + 1)};
-      sum += traverse(root, footprint, s, local);
+      sum += traverse(root, q, local);
     }
   if (stats) {
     stats->nodes_visited += local.nodes_visited;
     stats->elements_evaluated += local.elements_evaluated;
     stats->rmq_lookups += local.rmq_lookups;
+    stats->nodes_aggregated += local.nodes_aggregated;
   }
   return sum / normalizer(footprint, t);
 }
@@ -157,16 +218,28 @@ std::optional<Vec2> GlintPndf::sample(const GlintFootprint& footprint, const std
   if (t.empty()) return std::nullopt;
   const std::vector<double> wx = axis_weights(t.t0_lo, t.t0_hi, footprint.center.x(), footprint.sigma);
   const std::vector<double> wy = axis_weights(t.t1_lo, t.t1_hi, footprint.center.y(), footprint.sigma);
-  for (int attempt = 0; attempt < 64; ++attempt) {
-    const int64_t t0 = t.t0_lo + int64_t(pick(wx, uniform()));
-    const int64_t t1 = t.t1_lo + int64_t(pick(wy, uniform()));
-    const Vec2 u = texel_center(t0, t1);
-    const NormalSample q = range_->point().evaluate(u);
-    const Vec2 s =
-        sample_element_normal({u, q.n, q.jacobian}, footprint, sigma_r_, {uniform(), uniform(), uniform(), uniform()});
-    if (!outside(range_->element_bounds(t0, t1), s)) return s;
-  }
+  for (int attempt = 0; attempt < 64; ++attempt)
+    if (const std::optional<Vec2> s = draw(footprint, t, wx, wy, uniform)) return s;
   return std::nullopt;
+}
+
+std::optional<Vec2> GlintPndf::sample_once(const GlintFootprint& footprint,
+                                           const std::function<double()>& uniform) const {
+  const TexelRange t = footprint_texels(footprint);
+  if (t.empty()) return std::nullopt;
+  return draw(footprint, t, axis_weights(t.t0_lo, t.t0_hi, footprint.center.x(), footprint.sigma),
+              axis_weights(t.t1_lo, t.t1_hi, footprint.center.y(), footprint.sigma), uniform);
+}
+
+std::optional<Vec2> GlintPndf::draw(const GlintFootprint& footprint, const TexelRange& t, const std::vector<double>& wx,
+                                    const std::vector<double>& wy, const std::function<double()>& uniform) const {
+  const size_t i0 = pick(wx, uniform()), i1 = pick(wy, uniform());
+  const int64_t t0 = t.t0_lo + int64_t(i0 / kK), t1 = t.t1_lo + int64_t(i1 / kK);
+  const PositionNormalElement e = sub_element(range_->point(), t0, t1, int(i0 % kK), int(i1 % kK));
+  const double sigma = normal_sigma(footprint);
+  const Vec2 s = sample_element_normal(e, footprint, sigma, {uniform(), uniform(), uniform(), uniform()});
+  if (outside(range_->element_bounds(t0, t1), s, sigma)) return std::nullopt;
+  return s;
 }
 
 }  // namespace mbk

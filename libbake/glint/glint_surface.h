@@ -37,9 +37,10 @@ class GlintSurface {
 
   const GlintSettings& settings() const { return settings_; }
   const GlintPndf& pndf() const { return pndf_; }
-  // D_P(s) over the footprint: by traversal, or by brute force when `reference`.
+  // D_P(s) over the footprint: by the aggregated traversal (glint_pndf.h: within its stated bound), or by brute
+  // force when `reference`.
   double ndf(const GlintFootprint& footprint, const Vec2& s, bool reference) const {
-    return reference ? pndf_.evaluate_brute_force(footprint, s) : pndf_.evaluate(footprint, s);
+    return reference ? pndf_.evaluate_brute_force(footprint, s) : pndf_.evaluate(footprint, s, nullptr, true);
   }
 
   GlintSurface(const GlintSurface&) = delete;

@@ -22,10 +22,10 @@
 //   shared with `validate`), formats/lut_lookup.h (the one lookup convention: KnotInterpolant),
 //   formats/standardization_lut.h (the knots of an asset, as the evaluator reads them).
 // - RMQ min/max tables (`microbake rmq`, asset kind `rmq`, id 3; [Wang20] Sec. 4.4, 5.1, Alg. 1-2):
-//   example_jacobian.h (the per-texel Jacobian), element_normal_bounds.h (leaf intervals: the element's
-//   reach), rmq_table.h (the sparse table, quantized; its deviations), rmq_asset.h (the bake); the layout, the
-//   conservative quantizer and the O(1) rectangle query the evaluator uses live in formats/ (rmq_layout.h,
-//   rmq_quantization.h, rmq_query.h), which is all a renderer needs to read the asset.
+//   element_normal_bounds.h (leaf intervals: the reach of a texel's sub-elements), rmq_table.h (the sparse table,
+//   quantized; its deviations), rmq_asset.h (the bake); the layout, the conservative quantizer and the O(1) rectangle
+//   query the evaluator uses live in formats/ (rmq_layout.h, rmq_quantization.h, rmq_query.h), which is all a renderer
+//   needs to read the asset.
 // - Point query of the infinite microstructure ([Wang20] Sec. 4.2, Eqs. 4-6, appendix A.2): target_patch_grid.h
 //   (target patches of side P / 2, example patches of side P chosen by an integer hash of the grid vertex,
 //   bilinear weights), example_bilinear.h (the example read bilinearly between texel centres, clipped at the
@@ -49,9 +49,10 @@
 //   inside it, and derivatives at the border use one-sided differences.
 // - Position-normal element ([Yan16], [Wang20] Sec. 3.1): spatial sigma_h = 1.5 / sqrt(12) texels, spatial
 //   cut-off 3 sigma_h, normal cut-off 4 sigma_r (sigma_r, the intrinsic roughness, is applied at query time,
-//   never baked), Gaussian pixel footprint cut-off 3 sigma.
-// - Per-texel Jacobian J = d(n_x, n_y) / d(x, y) in texel units, by central differences of the example
-//   (one-sided at the borders); a texel's element spans n +/- (|dn/dx| + |dn/dy|) * 3 sigma_h per component.
+//   never baked), Gaussian pixel footprint cut-off 3 sigma. The P-NDF evaluates each texel's element as 2 x 2
+//   sub-elements of sigma_h / 2 (deviation below), truncated by the texel's element box.
+// - Sub-element Jacobians J = d(n_x, n_y) / d(x, y) in texel units are the bilinear field's own, inside a cell;
+//   a texel's element box (RMQ leaf) holds its four sub-elements (element_normal_bounds.h).
 // - Standardization ([Heitz18] Sec. 3): the Gaussian is the STANDARD normal N(0, 1). [Heitz18] use mean 0.5
 //   and standard deviation 1/6; the two differ by an affine map, which the variance-preserving blend
 //   ([Wang20] Eq. 5) commutes with, so blended results are identical.
@@ -79,14 +80,30 @@
 // - Deviation [Wang20]: derivatives are the slopes of the piecewise-linear interpolants' segments, not of the
 //   continuous transform, so values and Jacobians stay consistent (test:
 //   StandardizationLut.SlopesAreFiniteDifferencesOfTheInterpolant).
+// - Deviation [Yan16], [Wang20]: each texel's element is 2 x 2 sub-elements of sigma_h / 2 at the texel's
+//   quarter points, linearized there, not one element linearized at the texel centre. The blended field is
+//   piecewise bilinear with kinks on the lines through texel centres, exactly where [Yan16] puts the
+//   elements: one slope extrapolated over the whole element (+/- 3 sigma_h = 1.3 texels) overshoots every
+//   extreme of the field, so the P-NDF fattened its tails (bumps: 1.2-1.4x the exact mass beyond |s| = 0.4;
+//   scratches: 1.6-4x in [0.2, 0.4)) or, with one-sided slopes, lost them to truncation. Sub-elements sit
+//   inside the bilinear cells and reach a quarter as far past a kink (test: GlintPndfTailMass.*). Cost: four
+//   point queries per texel that passes its box test.
 // - Phi^-1 is exact to double precision (Acklam's rational approximation refined by Halley steps on erfc),
 //   not a single-precision approximation (tests: StandardNormal.*).
 #pragma once
 
 namespace mbk {
 
-// Spatial standard deviation of one texel's position-normal element, in texels ([Yan16]; 1.5 / sqrt(12)).
+// Spatial standard deviation of one texel's position-normal element, in texels ([Yan16]; 1.5 / sqrt(12)): the
+// reach of the RMQ leaf intervals (element_normal_bounds.h) and of every element's truncation box.
 inline constexpr double kGlintElementSigmaTexels = 0.43301270189221935;
+// The P-NDF splits each texel's element into K x K sub-elements of spatial sigma kGlintElementSigmaTexels / K,
+// centred at t + (a + 1/2) / K (a = 0..K-1 per axis), each linearized where it sits (glint_pndf.h).
+inline constexpr int kGlintSubElementsPerAxis = 2;
+// The aggregated traversal (glint_pndf.h) sums a node in closed form when its bounds are at most this many
+// sigma wide in both components.
+inline constexpr double kGlintAggregateWidthSigmas = 0.01;
+inline constexpr double kGlintSubElementSigmaTexels = kGlintElementSigmaTexels / kGlintSubElementsPerAxis;
 // Truncation radii, in standard deviations: spatial (element), normal (intrinsic roughness), pixel footprint.
 inline constexpr double kGlintSpatialCutoffSigmas = 3.0;
 inline constexpr double kGlintNormalCutoffSigmas = 4.0;

@@ -5,12 +5,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "libbake/glint/glint_technique.h"
-
 namespace mbk {
 namespace {
-
-constexpr double kSigmaH2 = kGlintElementSigmaTexels * kGlintElementSigmaTexels;
 
 // Two independent N(0, 1) numbers from two uniforms in [0, 1) (Box-Muller; 1 - u1 is in (0, 1]).
 Vec2 standard_normal_pair(double u1, double u2) {
@@ -33,7 +29,7 @@ double element_footprint_integral(const PositionNormalElement& element, const Gl
   // adj(J^T J) = adj(J) adj(J)^T, so
   //   det A = c^2 + c ir |J|_F^2 + ir^2 det(J)^2,     A^-1 b = (c b + ir adj(J) adj(J)^T b) / det A,
   // sums of non-negative terms but for det(J) and the last product, whose entries are J's own.
-  const double c = ip + 1.0 / kSigmaH2;
+  const double c = ip + 1.0 / (element.sigma_h * element.sigma_h);
   const Vec2 b = -ip * d + ir * J.transpose() * r;
   const double e = ip * d.squaredNorm() + ir * r.squaredNorm();
   const double det_j = J(0, 0) * J(1, 1) - J(0, 1) * J(1, 0);
@@ -45,19 +41,20 @@ double element_footprint_integral(const PositionNormalElement& element, const Gl
   return 2.0 * std::numbers::pi / std::sqrt(det) * std::exp(-0.5 * exponent);
 }
 
-double element_footprint_mass(const Vec2& element_center, const GlintFootprint& footprint, double sigma_r) {
-  const double sp2 = footprint.sigma * footprint.sigma;
-  const double se2 = sp2 * kSigmaH2 / (sp2 + kSigmaH2);
+double element_footprint_mass(const Vec2& element_center, double sigma_h, const GlintFootprint& footprint,
+                              double sigma_r) {
+  const double sp2 = footprint.sigma * footprint.sigma, sh2 = sigma_h * sigma_h;
+  const double se2 = sp2 * sh2 / (sp2 + sh2);
   const double d2 = (element_center - footprint.center).squaredNorm();
   constexpr double kTwoPi = 2.0 * std::numbers::pi;
-  return kTwoPi * sigma_r * sigma_r * kTwoPi * se2 * std::exp(-0.5 * d2 / (sp2 + kSigmaH2));
+  return kTwoPi * sigma_r * sigma_r * kTwoPi * se2 * std::exp(-0.5 * d2 / (sp2 + sh2));
 }
 
 Vec2 sample_element_normal(const PositionNormalElement& element, const GlintFootprint& footprint, double sigma_r,
                            const std::array<double, 4>& uniforms) {
-  const double sp2 = footprint.sigma * footprint.sigma;
-  const Vec2 mean = (kSigmaH2 * footprint.center + sp2 * element.center) / (sp2 + kSigmaH2);
-  const double se = std::sqrt(sp2 * kSigmaH2 / (sp2 + kSigmaH2));
+  const double sp2 = footprint.sigma * footprint.sigma, sh2 = element.sigma_h * element.sigma_h;
+  const Vec2 mean = (sh2 * footprint.center + sp2 * element.center) / (sp2 + sh2);
+  const double se = std::sqrt(sp2 * sh2 / (sp2 + sh2));
   const Vec2 u = mean + se * standard_normal_pair(uniforms[0], uniforms[1]);
   return element.n + element.jacobian * (u - element.center) + sigma_r * standard_normal_pair(uniforms[2], uniforms[3]);
 }

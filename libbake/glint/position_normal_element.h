@@ -3,9 +3,9 @@
 //
 // Units: positions u in target texels (target_patch_grid.h), normals s in normal components (n_x, n_y).
 // Footprint: G_P(u) = exp(-|u - c|^2 / (2 sigma_p^2)) (isotropic; truncated by the P-NDF, not here).
-// Element i ([Yan16]; docs/ARCHITECTURE.md): centre u_i, normal n_i, Jacobian J_i (dn/du),
+// Element i ([Yan16]; docs/ARCHITECTURE.md): centre u_i, normal n_i, Jacobian J_i (dn/du), spatial sigma_h,
 //   G_i(u, s) = exp(-|u - u_i|^2 / (2 sigma_h^2)) exp(-|s - n_i - J_i (u - u_i)|^2 / (2 sigma_r^2)),
-// sigma_h = kGlintElementSigmaTexels, sigma_r the intrinsic roughness. With d = u_i - c, r = s - n_i and
+// sigma_r the intrinsic roughness (the P-NDF's elements: glint_pndf.h). With d = u_i - c, r = s - n_i and
 // delta = u - u_i, the exponent is -(delta^T A delta - 2 b^T delta + e) / 2 with
 //   A = (1/sigma_p^2 + 1/sigma_h^2) I + J^T J / sigma_r^2,   b = -d / sigma_p^2 + J^T r / sigma_r^2,
 //   e = |d|^2 / sigma_p^2 + |r|^2 / sigma_r^2,
@@ -27,19 +27,24 @@ namespace mbk {
 struct GlintFootprint {
   Vec2 center;         // c, target texels
   double sigma = 1.0;  // sigma_p, target texels (> 0)
+  // How far the pixel's half vector sweeps in s (standard deviation, normal units, >= 0): the P-NDF evaluates
+  // its elements with sqrt(sigma_r^2 + spread^2) in place of sigma_r (glint_pndf.h).
+  double normal_spread = 0.0;
 };
 
 struct PositionNormalElement {
   Vec2 center;  // u_i
   Vec2 n;       // n_i
   Mat2 jacobian;
+  double sigma_h = 0.0;  // spatial standard deviation, texels (> 0)
 };
 
 // Eq. (1) above.
 double element_footprint_integral(const PositionNormalElement& element, const GlintFootprint& footprint, double sigma_r,
                                   const Vec2& s);
-// Eq. (2) above; depends on the element only through its centre.
-double element_footprint_mass(const Vec2& element_center, const GlintFootprint& footprint, double sigma_r);
+// Eq. (2) above; depends on the element only through its centre and sigma_h.
+double element_footprint_mass(const Vec2& element_center, double sigma_h, const GlintFootprint& footprint,
+                              double sigma_r);
 // A normal with density k_i / m_i, from four independent uniform numbers in [0, 1).
 Vec2 sample_element_normal(const PositionNormalElement& element, const GlintFootprint& footprint, double sigma_r,
                            const std::array<double, 4>& uniforms);

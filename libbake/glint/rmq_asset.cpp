@@ -14,8 +14,9 @@ nlohmann::json rmq_conventions() {
       "level-major [level][row][x][min_x, max_x, min_y, max_y]; entry (k, x, row) bounds the square "
       "[x, x + 2^k) x [row, row + 2^k) clipped to the example; levels k = 0..log2(patch), every texel";
   c["leaf"] =
-      "texel element reach: n +/- (|dn/dx| + |dn/drow|) * 3 sigma_h per component, sigma_h = 1.5/sqrt(12) "
-      "texels; derivatives by central differences, one-sided at the borders; sigma_r not included";
+      "texel element reach: n +/- (D^x + D^y) * (1/4 + 3 sigma_h / 2) per component, sigma_h = 1.5/sqrt(12) "
+      "texels, D^x (D^y) the largest |difference| between horizontally (vertically) adjacent texels of the 3 x 3 "
+      "block (pairs outside the example skipped): the 2 x 2 sub-elements' reach; sigma_r not included";
   c["quantization"] =
       "value(q) = lo if q = 0, hi if q = 2^bits - 1, else min(hi, lo + q * ((hi - lo) / (2^bits - 1))); "
       "minima rounded down, maxima rounded up; [lo, hi] per component in section 'range' (rows n_x, n_y)";

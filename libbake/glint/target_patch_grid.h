@@ -2,7 +2,7 @@
 // point u of the infinite target plane, where in the example each one is read, and with which weights.
 //
 // Coordinates: u = (u_0, u_1) in EXAMPLE-TEXEL units along the example's own axes (u_0 along the column index
-// x, u_1 along the row index, i.e. DOWN the image, like example_jacobian.h); the evaluator maps tangent +v to
+// x, u_1 along the row index, i.e. DOWN the image, like example_bilinear.h); the evaluator maps tangent +v to
 // -u_1. With P the example patch side (texels) and h = P / 2 the target patch side:
 // - Target patch (i, j) = [i h, (i + 1) h) x [j h, (j + 1) h), i = floor(u_0 / h), j = floor(u_1 / h); its local
 //   coordinates are f = u / h - (i, j) in [0, 1)^2.

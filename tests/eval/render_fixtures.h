@@ -17,11 +17,13 @@ inline void bake_scene(const Scene& scene) {
     a.recipe.bake(Progress::silent()).write(default_asset_folder(scene) / a.file_name);
 }
 
-// spp samples per pixel, or (reference > 0) the reference with reference x reference rays per pixel.
-inline Image render(const Scene& scene, uint32_t spp, uint32_t reference = 0) {
+// spp samples per pixel, or (reference > 0) the reference with reference x reference rays per pixel; `seed`
+// picks the sub-pixel jitter.
+inline Image render(const Scene& scene, uint32_t spp, uint32_t reference = 0, uint32_t seed = 0) {
   RenderSettings settings;
   settings.spp = spp;
   settings.reference = reference;
+  settings.seed = seed;
   return render_scene(scene, load_render_inputs(scene, settings), settings, Progress::silent());
 }
 

@@ -46,19 +46,22 @@ std::vector<Vec2> random_points(uint32_t patch) {
   return u;
 }
 
-// Eq. 6 by hand, with the exact transform: n = G^-1(sum w_k G(I_k) / ||w||).
+// Eq. 6 by hand, with the exact transform: n = G^-1(sum w_k Z_k / ||w||), Z_k the exactly standardized
+// example G(texel) read bilinearly.
 FieldSample exact_blend(const NormalMap& map, uint32_t patch, uint32_t seed, const std::vector<Vec2>& points) {
   std::array<std::vector<float>, 2> values;
   for (const Vec3f& t : map.texels) values[0].push_back(t.x()), values[1].push_back(t.y());
   const EmpiricalStandardization g[2] = {EmpiricalStandardization(values[0]), EmpiricalStandardization(values[1])};
+  ExampleChannels standardized{map.width, map.height, {}};
+  for (const Vec3f& t : map.texels) standardized.texels.emplace_back(g[0].forward(t.x()), g[1].forward(t.y()));
   const TargetPatchGrid grid(map.width, map.height, patch, seed);
   FieldSample out;
   for (const Vec2& u : points) {
     const TargetPatchLocation loc = grid.locate(u);
     double z[2] = {0, 0}, w2 = 0;
     for (const TargetPatchCorner& c : loc.corners) {
-      const Vec2 n = sample_example_bilinear(map, c.example_point).n;
-      for (int ch = 0; ch < 2; ++ch) z[ch] += c.weight * g[ch].forward(n[ch]);
+      const Vec2 zk = sample_example_bilinear(standardized, c.example_point).n;
+      for (int ch = 0; ch < 2; ++ch) z[ch] += c.weight * zk[ch];
       w2 += c.weight * c.weight;
     }
     for (int ch = 0; ch < 2; ++ch) out.n[ch].push_back(g[ch].inverse(z[ch] / std::sqrt(w2)));

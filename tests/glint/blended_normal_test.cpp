@@ -44,7 +44,8 @@ int64_t lut_interval(std::span<const float> keys, double x) {
 
 // Everything that selects the smooth piece n is evaluated on at u: the target patch (and for `none` the
 // nearest vertex), each corner's bilinear cell in the example (unclamped floor of e - 0.5), and for
-// `histogram` the LUT intervals of G(I_k) and of G^-1(Z), Z recomputed here from the public pieces.
+// `histogram` the LUT interval of G^-1(Z), Z recomputed here from the public pieces (the standardized example,
+// read bilinearly).
 std::vector<int64_t> piece_signature(const GlintPointQuery& q, const StandardizationLut& lut, const Vec2& u) {
   const TargetPatchLocation loc = q.grid().locate(u);
   std::vector<int64_t> sig = {loc.i, loc.j, loc.local.x() >= 0.5, loc.local.y() >= 0.5};
@@ -53,12 +54,9 @@ std::vector<int64_t> piece_signature(const GlintPointQuery& q, const Standardiza
   for (const TargetPatchCorner& c : loc.corners) {
     sig.push_back(int64_t(std::floor(c.example_point.x() - 0.5)));
     sig.push_back(int64_t(std::floor(c.example_point.y() - 0.5)));
-    const NormalSample s = sample_example_bilinear(fixture().example, c.example_point);
+    const NormalSample s = sample_example_bilinear(q.blended_channels(), c.example_point);
     w2 += c.weight * c.weight;
-    for (int ch = 0; ch < 2; ++ch) {
-      sig.push_back(lut_interval(lut.channels[ch].x(), s.n[ch]));
-      z[ch] += c.weight * lut.channels[ch].standardize(s.n[ch]).value;
-    }
+    for (int ch = 0; ch < 2; ++ch) z[ch] += c.weight * s.n[ch];
   }
   for (int ch = 0; ch < 2; ++ch) sig.push_back(lut_interval(lut.channels[ch].z(), z[ch] / std::sqrt(w2)));
   return sig;
@@ -113,23 +111,24 @@ TEST(GlintPointQuery, JacobianMatchesCentralDifferencesAwayFromKinks_AllModes) {
 }
 
 TEST(GlintPointQuery, ExampleReadingIsExactAtTexelCentresAndClippedAtTheBorder) {
-  const NormalMap& ex = fixture().example;
+  const NormalMap& map = fixture().example;
+  const ExampleChannels ex = normal_components(map);
   for (uint32_t r : {0u, 5u, 127u})
     for (uint32_t x : {0u, 64u, 127u}) {
       const NormalSample s = sample_example_bilinear(ex, Vec2(x + 0.5, r + 0.5));
-      EXPECT_EQ(s.n.x(), double(ex.at(x, r).x()));
-      EXPECT_EQ(s.n.y(), double(ex.at(x, r).y()));
+      EXPECT_EQ(s.n.x(), double(map.at(x, r).x()));
+      EXPECT_EQ(s.n.y(), double(map.at(x, r).y()));
     }
   // Within half a texel of (and beyond) the left border the value is the first column's and d/de_0 is 0.
   for (double e0 : {0.0, 0.25, 0.4999}) {
     const NormalSample s = sample_example_bilinear(ex, Vec2(e0, 40.5));
-    EXPECT_EQ(s.n.x(), double(ex.at(0, 40).x()));
+    EXPECT_EQ(s.n.x(), double(map.at(0, 40).x()));
     EXPECT_EQ(s.jacobian(0, 0), 0.0);
     EXPECT_EQ(s.jacobian(1, 0), 0.0);
   }
   // Midway between two centres: the mean of the two texels.
   const NormalSample mid = sample_example_bilinear(ex, Vec2(11.0, 20.5));
-  EXPECT_NEAR(mid.n.x(), 0.5 * (double(ex.at(10, 20).x()) + double(ex.at(11, 20).x())), 1e-15);
+  EXPECT_NEAR(mid.n.x(), 0.5 * (double(map.at(10, 20).x()) + double(map.at(11, 20).x())), 1e-15);
 }
 
 TEST(GlintPointQuery, SmoothBlendsAreContinuousAcrossTargetPatchBorders) {
@@ -204,6 +203,7 @@ TEST(GlintPointQuery, BlendsKeepTheStatisticsOfTheExampleAsRead) {
   const uint32_t origins = f.example.width - kPatch + 1;
   // R(d) on the 2 kQuad x 2 kQuad midpoint grid of offsets d in [0, P]^2 (the four corners' offsets of the
   // kQuad x kQuad quadrature points below), and the moments of the read distribution I(o + d) over all o and d.
+  const ExampleChannels example = normal_components(f.example);
   std::vector<Vec2> table(4 * kQuad * kQuad);
   Vec2 read_sum = Vec2::Zero(), read_sq = Vec2::Zero();
   for (int b = 0; b < 2 * kQuad; ++b)
@@ -212,7 +212,7 @@ TEST(GlintPointQuery, BlendsKeepTheStatisticsOfTheExampleAsRead) {
       Vec2 sum = Vec2::Zero();
       for (uint32_t oy = 0; oy < origins; ++oy)
         for (uint32_t ox = 0; ox < origins; ++ox) {
-          const Vec2 v = sample_example_bilinear(f.example, Vec2(ox, oy) + d).n;
+          const Vec2 v = sample_example_bilinear(example, Vec2(ox, oy) + d).n;
           sum += v;
           read_sq += v.cwiseProduct(v);
         }

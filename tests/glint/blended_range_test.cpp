@@ -52,13 +52,17 @@ struct Truth {
 
 // Brute force for target texel t: locate its centre, read the four example texels the corners land on, blend
 // the ends of their leaf intervals (the blend is monotone, so these are its extremes over the intervals).
-Truth brute_force_element(const GlintPointQuery& q, int64_t t0, int64_t t1) {
+Truth brute_force_element(const GlintPointQuery& q, const RmqTableView& table, int64_t t0, int64_t t1) {
   const Vec2 u(double(t0) + 0.5, double(t1) + 0.5);
   const TargetPatchLocation loc = q.grid().locate(u);
   std::array<RmqBounds, 4> leaf;
   for (int k = 0; k < 4; ++k) {
     const Vec2 e = loc.corners[k].example_point;  // a texel centre: floor gives the texel
-    leaf[k] = element_normal_bounds(q.example(), uint32_t(std::floor(e.x())), uint32_t(std::floor(e.y())));
+    const uint32_t x = uint32_t(std::floor(e.x())), row = uint32_t(std::floor(e.y()));
+    leaf[k] = table.query(x, row, 1, 1);  // the stored leaf: it holds the exact one
+    const RmqBounds exact = element_normal_bounds(q.example(), x, row);
+    EXPECT_TRUE(leaf[k].min_x <= exact.min_x && leaf[k].max_x >= exact.max_x && leaf[k].min_y <= exact.min_y &&
+                leaf[k].max_y >= exact.max_y);
   }
   Truth t;
   std::array<double, 4> v;
@@ -116,7 +120,7 @@ void check_nodes_contain_brute_force(const char* kind) {
         RmqBounds hull{INFINITY, -INFINITY, INFINITY, -INFINITY};
         for (uint32_t y = node.y0; y < node.y0 + node.height; ++y)
           for (uint32_t x = node.x0; x < node.x0 + node.width; ++x) {
-            const Truth t = brute_force_element(q, node.patch_i * h + x, node.patch_j * h + y);
+            const Truth t = brute_force_element(q, view, node.patch_i * h + x, node.patch_j * h + y);
             hull = {std::min(hull.min_x, t.box.min_x), std::max(hull.max_x, t.box.max_x),
                     std::min(hull.min_y, t.box.min_y), std::max(hull.max_y, t.box.max_y)};
             ASSERT_LE(t.box.min_x, t.n.x() + 1e-12) << glint_blend_mode_name(mode);
@@ -164,7 +168,8 @@ TEST(GlintRangeQuery, VarianceBoundUsesInteriorMinimumOfWeightNorm) {
   EXPECT_NEAR(side.max_x, 0.9 / q, 1e-9);
 }
 
-// A one-point box gives the scalar blend itself (the element bounds of blended_range.h), for every mode.
+// A one-point box gives the scalar blend of the stored leaves (the element bounds of blended_range.h), for every
+// mode.
 TEST(GlintRangeQuery, ElementBoundsEqualScalarBlendOfLeafIntervals_AllModes) {
   const Fixture f("leather");
   const RmqTableView view = f.rmq16.view();
@@ -176,7 +181,7 @@ TEST(GlintRangeQuery, ElementBoundsEqualScalarBlendOfLeafIntervals_AllModes) {
     for (int n = 0; n < 2000; ++n) {
       const int64_t t0 = t(rng), t1 = t(rng);
       const RmqBounds b = r.element_bounds(t0, t1);
-      const Truth truth = brute_force_element(q, t0, t1);
+      const Truth truth = brute_force_element(q, view, t0, t1);
       ASSERT_NEAR(b.min_x, truth.box.min_x, 1e-11) << glint_blend_mode_name(mode);
       ASSERT_NEAR(b.max_x, truth.box.max_x, 1e-11) << glint_blend_mode_name(mode);
       ASSERT_NEAR(b.min_y, truth.box.min_y, 1e-11) << glint_blend_mode_name(mode);

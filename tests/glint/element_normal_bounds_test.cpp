@@ -1,84 +1,85 @@
-// The leaf intervals of the RMQ table: example Jacobians by central differences (exact on quadratics),
-// one-sided at the borders and zero across a single texel; and each texel's interval is exactly the range
-// of its linear position-normal element over the 3 sigma_h cut-off square (attained at the corners).
+// The leaf intervals of the RMQ table (element_normal_bounds.h): each texel's interval holds every one of its
+// sub-elements - the bilinear example linearized at the texel's quarter points - over the sub-element cut-off
+// square, on random maps including their borders and one-texel axes; on a linear map (where the bilinear field
+// is the linear one) the interval is exactly the reach of the largest sub-element; a constant map gives points.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "libbake/glint/element_normal_bounds.h"
-#include "libbake/glint/example_jacobian.h"
+#include "libbake/glint/example_bilinear.h"
+#include "libbake/glint/glint_technique.h"
 
 namespace mbk {
 namespace {
 
-// n_x = a x^2 + b row, n_y = c row^2 - d x row (z unused by glints): central differences are exact on
-// quadratics, so the expected Jacobian is known in closed form everywhere, borders included.
-constexpr double a = 0.003, b = -0.01, c = 0.002, d = 0.0015;
-NormalMap quadratic_map(uint32_t w, uint32_t h) {
+NormalMap random_map(uint32_t w, uint32_t h, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> v(-0.6f, 0.6f);
   NormalMap m;
   m.width = w, m.height = h;
-  m.texels.resize(size_t(w) * h);
-  for (uint32_t row = 0; row < h; ++row)
-    for (uint32_t x = 0; x < w; ++x)
-      m.at(x, row) = Vec3f(float(a * x * x + b * row), float(c * row * row - d * x * row), 0.5f);
+  for (size_t i = 0; i < size_t(w) * h; ++i) m.texels.emplace_back(v(rng), v(rng), 0.5f);
   return m;
 }
 
-TEST(ExampleJacobian, CentralDifferencesInsideOneSidedAtTheBorders) {
-  const uint32_t W = 9, H = 6;
-  const NormalMap m = quadratic_map(W, H);
-  for (uint32_t row = 0; row < H; ++row)
-    for (uint32_t x = 0; x < W; ++x) {
-      // d/dx of a x^2 by the stencil used at x: central 2 a x; forward a (x=0); backward a (2W - 3) at x = W-1.
-      const double dxx = x == 0 ? a : x == W - 1 ? a * (2.0 * W - 3.0) : 2 * a * x;
-      const double drow_yy = row == 0 ? c : row == H - 1 ? c * (2.0 * H - 3.0) : 2 * c * row;
-      const double dx_y = -d * row;  // d(-d x row)/dx, exact for any stencil (linear in x)
-      const double drow_y = -d * x;
-      const Mat2 j = example_jacobian(m, x, row);
-      const double tol = 1e-6;  // the map is stored in float
-      EXPECT_NEAR(j(0, 0), dxx, tol) << x << "," << row;
-      EXPECT_NEAR(j(0, 1), b, tol) << x << "," << row;
-      EXPECT_NEAR(j(1, 0), dx_y, tol) << x << "," << row;
-      EXPECT_NEAR(j(1, 1), drow_yy + drow_y, tol) << x << "," << row;
+// The range of sub-element q of texel (x, row) over its cut-off square, by a 21 x 21 grid of its corners and
+// inside (a linear function's extremes over a square are at its corners, which the grid contains).
+RmqBounds sub_element_range(const ExampleChannels& e, uint32_t x, uint32_t row, int a0, int a1) {
+  constexpr int kK = kGlintSubElementsPerAxis;
+  const Vec2 u(x + (a0 + 0.5) / kK, row + (a1 + 0.5) / kK);
+  const NormalSample q = sample_example_bilinear(e, u);
+  const double reach = kGlintSpatialCutoffSigmas * kGlintSubElementSigmaTexels;
+  RmqBounds b{INFINITY, -INFINITY, INFINITY, -INFINITY};
+  for (int i = 0; i <= 20; ++i)
+    for (int k = 0; k <= 20; ++k) {
+      const Vec2 n = q.n + q.jacobian * Vec2(reach * (i / 10.0 - 1.0), reach * (k / 10.0 - 1.0));
+      b = {std::min(b.min_x, n.x()), std::max(b.max_x, n.x()), std::min(b.min_y, n.y()), std::max(b.max_y, n.y())};
     }
+  return b;
 }
 
-TEST(ExampleJacobian, SingleTexelAxisHasZeroDerivative) {
-  const NormalMap column = quadratic_map(1, 5), row = quadratic_map(5, 1), one = quadratic_map(1, 1);
-  for (uint32_t i = 0; i < 5; ++i) {
-    EXPECT_EQ(example_jacobian(column, 0, i).col(0), Vec2::Zero());
-    EXPECT_EQ(example_jacobian(row, i, 0).col(1), Vec2::Zero());
+TEST(ElementNormalBounds, ContainsEverySubElement) {
+  for (const auto& [w, h] : {std::pair{9u, 7u}, std::pair{1u, 6u}, std::pair{5u, 1u}, std::pair{1u, 1u}}) {
+    const NormalMap m = random_map(w, h, w * 31 + h);
+    const ExampleChannels e = normal_components(m);
+    for (uint32_t row = 0; row < h; ++row)
+      for (uint32_t x = 0; x < w; ++x) {
+        const RmqBounds leaf = element_normal_bounds(m, x, row);
+        for (int a1 = 0; a1 < kGlintSubElementsPerAxis; ++a1)
+          for (int a0 = 0; a0 < kGlintSubElementsPerAxis; ++a0) {
+            const RmqBounds q = sub_element_range(e, x, row, a0, a1);
+            EXPECT_LE(leaf.min_x, q.min_x + 1e-12) << w << "x" << h << " texel " << x << "," << row;
+            EXPECT_GE(leaf.max_x, q.max_x - 1e-12) << w << "x" << h << " texel " << x << "," << row;
+            EXPECT_LE(leaf.min_y, q.min_y + 1e-12) << w << "x" << h << " texel " << x << "," << row;
+            EXPECT_GE(leaf.max_y, q.max_y - 1e-12) << w << "x" << h << " texel " << x << "," << row;
+          }
+      }
   }
-  EXPECT_EQ(example_jacobian(one, 0, 0), Mat2::Zero());
 }
 
-TEST(ElementNormalBounds, SpreadIsJacobianTimesCutoff) {
-  const NormalMap m = quadratic_map(7, 5);
-  const double reach = 3.0 * 1.5 / std::sqrt(12.0);  // 3 sigma_h, sigma_h = 1.5 / sqrt(12) texels
-  for (uint32_t row = 0; row < 5; ++row)
-    for (uint32_t x = 0; x < 7; ++x) {
-      const Mat2 j = example_jacobian(m, x, row);
-      const RmqBounds bounds = element_normal_bounds(m, x, row);
-      const double nx = m.at(x, row).x(), ny = m.at(x, row).y();
-      const double rx = (std::abs(j(0, 0)) + std::abs(j(0, 1))) * reach;
-      const double ry = (std::abs(j(1, 0)) + std::abs(j(1, 1))) * reach;
-      EXPECT_DOUBLE_EQ(bounds.min_x, nx - rx);
-      EXPECT_DOUBLE_EQ(bounds.max_x, nx + rx);
-      EXPECT_DOUBLE_EQ(bounds.min_y, ny - ry);
-      EXPECT_DOUBLE_EQ(bounds.max_y, ny + ry);
-      // The linear element n + J (u - u_i) over the cut-off square stays inside and reaches both ends.
-      double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
-      for (int i = 0; i <= 20; ++i)
-        for (int k = 0; k <= 20; ++k) {
-          const Vec2 u(reach * (i / 10.0 - 1.0), reach * (k / 10.0 - 1.0));
-          const Vec2 n = Vec2(nx, ny) + j * u;
-          lo_x = std::min(lo_x, n.x()), hi_x = std::max(hi_x, n.x());
-          lo_y = std::min(lo_y, n.y()), hi_y = std::max(hi_y, n.y());
+TEST(ElementNormalBounds, LinearMapReachesExactlyTheLargestSubElement) {
+  // n_x = 0.01 x - 0.02 row, n_y = 0.005 row (exact in float at these sizes to ~1e-8).
+  NormalMap m;
+  m.width = 8, m.height = 6;
+  for (uint32_t row = 0; row < 6; ++row)
+    for (uint32_t x = 0; x < 8; ++x) m.texels.emplace_back(float(0.01 * x - 0.02 * row), float(0.005 * row), 0.5f);
+  const ExampleChannels e = normal_components(m);
+  for (uint32_t row = 1; row < 5; ++row)
+    for (uint32_t x = 1; x < 7; ++x) {
+      const RmqBounds leaf = element_normal_bounds(m, x, row);
+      RmqBounds all{INFINITY, -INFINITY, INFINITY, -INFINITY};
+      for (int a1 = 0; a1 < kGlintSubElementsPerAxis; ++a1)
+        for (int a0 = 0; a0 < kGlintSubElementsPerAxis; ++a0) {
+          const RmqBounds q = sub_element_range(e, x, row, a0, a1);
+          all = {std::min(all.min_x, q.min_x), std::max(all.max_x, q.max_x), std::min(all.min_y, q.min_y),
+                 std::max(all.max_y, q.max_y)};
         }
-      EXPECT_NEAR(lo_x, bounds.min_x, 1e-12);
-      EXPECT_NEAR(hi_x, bounds.max_x, 1e-12);
-      EXPECT_NEAR(lo_y, bounds.min_y, 1e-12);
-      EXPECT_NEAR(hi_y, bounds.max_y, 1e-12);
+      EXPECT_NEAR(leaf.min_x, all.min_x, 1e-7);
+      EXPECT_NEAR(leaf.max_x, all.max_x, 1e-7);
+      EXPECT_NEAR(leaf.min_y, all.min_y, 1e-7);
+      EXPECT_NEAR(leaf.max_y, all.max_y, 1e-7);
     }
 }
 
