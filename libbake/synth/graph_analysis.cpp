@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "libbake/core/parallel.h"
+#include "libbake/synth/loop_transitions.h"
 #include "libbake/synth/neighbourhood_pca.h"
 #include "libbake/synth/neighbourhood_search.h"
 
@@ -56,18 +57,31 @@ GraphAnalysis analyse_graph(const ExemplarGraph& graph, const std::vector<Image>
         stack_neighbourhood(a.stacks[i].images[k], a.stacks[i].spacing(k), x, y, &v[(size_t(y) * m + x) * dims]);
   });
 
+  std::vector<double> contrast(size_t(E) * a.levels);
+  for (uint32_t i = 0; i < E; ++i)
+    for (uint32_t k = 0; k < a.levels; ++k)
+      contrast[size_t(i) * a.levels + k] =
+          neighbourhood_contrast(a.stacks[i].images[k].pixels.data(), m, ch, a.stacks[i].spacing(k));
+  const LoopGains gains(a.levels, std::move(contrast));
+
   progress.start("analysis", uint64_t(E) * a.levels);
   for (uint32_t i = 0; i < E; ++i)
     for (uint32_t k = 0; k < a.levels; ++k) {
-      const std::vector<StackLevel>& pool_levels = a.admissible[i][k];
+      std::vector<StackLevel> pool_levels;  // the admissible levels correction may move to (loop_transitions.h)
+      for (const StackLevel& l : a.admissible[i][k])
+        if (loop_transition_allowed(i, k, l.exemplar, l.level, a.levels - 1)) pool_levels.push_back(l);
       if (pool_levels.empty()) {
         progress.advance();
         continue;
       }
       std::vector<float> pool;
-      for (const StackLevel& l : pool_levels) {
+      for (const StackLevel& l : pool_levels) {  // loop levels at the source's contrast (loop_transitions.h)
         const std::vector<float>& v = vectors[size_t(l.exemplar) * a.levels + l.level];
+        const size_t start = pool.size();
         pool.insert(pool.end(), v.begin(), v.end());
+        const double g = gains.gain(i, k, l.exemplar, l.level);
+        if (g != 1.0)
+          for (size_t n = start; n < pool.size(); n += dims) apply_loop_gain(&pool[n], ch, g);
       }
       const NeighbourhoodPca pca = fit_pca(pool, dims, options.pca_components);
       a.kept_variance[size_t(i) * a.levels + k] = pca.kept_variance;

@@ -12,6 +12,7 @@
 
 #include "libbake/core/parallel.h"
 #include "libbake/synth/graph_analysis.h"
+#include "libbake/synth/loop_transitions.h"
 #include "libbake/synth/neighbourhood_pca.h"
 
 namespace mbk {
@@ -86,6 +87,37 @@ double squared_distance(const std::vector<float>& a, const std::vector<float>& b
   return s;
 }
 
+// The loop gain of loop_transitions.h for E^i_k -> E^i_l, from the stacks.
+double loop_gain(const GraphAnalysis& a, uint32_t i, uint32_t k, uint32_t l) {
+  const auto contrast = [&](uint32_t level) {
+    return neighbourhood_contrast(a.stacks[i].images[level].pixels.data(), a.side, a.channels,
+                                  a.stacks[i].spacing(level));
+  };
+  return std::sqrt(contrast(k) / contrast(l));
+}
+
+// The mean 5 x 5 neighbourhood variance of a level: 0 when constant; for a checkerboard of +-1 at spacing 1 every
+// neighbourhood holds 13 of one sign and 12 of the other (variance 1 - 1/625), at spacing 2 one colour (0).
+TEST(LoopTransitions, NeighbourhoodContrastOfConstantAndCheckerboard) {
+  const uint32_t m = 8;
+  std::vector<float> flat(m * m, 0.25f), board(m * m);
+  for (uint32_t y = 0; y < m; ++y)
+    for (uint32_t x = 0; x < m; ++x) board[y * m + x] = (x + y) % 2 ? 1.0f : -1.0f;
+  EXPECT_EQ(neighbourhood_contrast(flat.data(), m, 1, 1), 0.0);
+  EXPECT_NEAR(neighbourhood_contrast(board.data(), m, 1, 1), 1.0 - 1.0 / 625.0, 1e-12);
+  EXPECT_EQ(neighbourhood_contrast(board.data(), m, 1, 2), 0.0);
+  // The gain keeps a neighbourhood's mean and scales its deviations.
+  std::vector<float> v(25);
+  for (uint32_t j = 0; j < 25; ++j) v[j] = float(j);
+  apply_loop_gain(v.data(), 1, 0.5);
+  for (uint32_t j = 0; j < 25; ++j) EXPECT_FLOAT_EQ(v[j], 12.0f + 0.5f * (float(j) - 12.0f));
+  // Loops below the finest level are refused, other transitions kept.
+  EXPECT_FALSE(loop_transition_allowed(0, 3, 0, 2, 6));
+  EXPECT_TRUE(loop_transition_allowed(0, 6, 0, 5, 6));
+  EXPECT_TRUE(loop_transition_allowed(0, 3, 0, 3, 6));
+  EXPECT_TRUE(loop_transition_allowed(0, 3, 1, 1, 6));
+}
+
 TEST(GraphAnalysis, FirstCandidateIsTheBruteForceNearestInPcaSpaceAndOthersAdmissibleDistinctAndMostlyDispersed) {
   const uint32_t m = 16;
   TwoExemplarGraph g(m);
@@ -96,7 +128,9 @@ TEST(GraphAnalysis, FirstCandidateIsTheBruteForceNearestInPcaSpaceAndOthersAdmis
   size_t checked = 0, same_level = 0, dispersed = 0, second_checked = 0;
   for (uint32_t i = 0; i < 2; ++i)
     for (uint32_t k = 0; k < a.levels; ++k) {
-      const auto& pool_levels = a.admissible[i][k];
+      std::vector<StackLevel> pool_levels;  // loops only from the finest level (loop_transitions.h)
+      for (const StackLevel& l : a.admissible[i][k])
+        if (loop_transition_allowed(i, k, l.exemplar, l.level, a.levels - 1)) pool_levels.push_back(l);
       if (pool_levels.empty()) {
         EXPECT_EQ(a.candidates[a.candidate_index(i, k, 0, 0)].exemplar, kNoCandidate);
         continue;
@@ -109,6 +143,7 @@ TEST(GraphAnalysis, FirstCandidateIsTheBruteForceNearestInPcaSpaceAndOthersAdmis
             std::vector<float> v(dims);
             stack_neighbourhood(a.stacks[l.exemplar].images[l.level], a.stacks[l.exemplar].spacing(l.level), x, y,
                                 v.data());
+            if (l.exemplar == i && l.level < k) apply_loop_gain(v.data(), ch, loop_gain(a, i, k, l.level));
             pool.insert(pool.end(), v.begin(), v.end());
           }
       for (uint32_t y = 0; y < m; ++y)
