@@ -25,29 +25,32 @@ double neighbourhood_contrast(const float* level, uint32_t m, uint32_t channels,
   return total / (double(m) * m);
 }
 
-LoopGains loop_gains_of_stacks(const float* stacks, uint32_t exemplars, uint32_t levels, uint32_t m, uint32_t channels) {
+LoopContrast loop_contrast_of_stacks(const float* stacks, uint32_t exemplars, uint32_t levels, uint32_t m,
+                                     uint32_t channels) {
   std::vector<double> contrast(size_t(exemplars) * levels);
   for (uint32_t i = 0; i < exemplars; ++i)
     for (uint32_t k = 0; k < levels; ++k)
-      contrast[size_t(i) * levels + k] = neighbourhood_contrast(stacks + (size_t(i) * levels + k) * m * m * channels,
-                                                                m, channels, 1u << (levels - 1 - k));
-  return LoopGains(levels, std::move(contrast));
+      contrast[size_t(i) * levels + k] = neighbourhood_contrast(stacks + (size_t(i) * levels + k) * m * m * channels, m,
+                                                                channels, 1u << (levels - 1 - k));
+  return LoopContrast(levels, std::move(contrast));
 }
 
-double LoopGains::gain(uint32_t source_exemplar, uint32_t k, uint32_t destination_exemplar, uint32_t l) const {
-  if (source_exemplar != destination_exemplar || l >= k) return 1.0;
-  const double s = contrast_[size_t(source_exemplar) * levels_ + k], d = contrast_[size_t(source_exemplar) * levels_ + l];
-  return s > 0.0 && d > 0.0 ? std::sqrt(s / d) : 1.0;
+void remove_neighbourhood_mean(float* neighbourhood, uint32_t channels) {
+  double mean[4] = {0, 0, 0, 0};
+  for (uint32_t j = 0; j < 25 * channels; ++j) mean[j % channels] += neighbourhood[j] / 25.0;
+  for (uint32_t j = 0; j < 25 * channels; ++j) neighbourhood[j] = float(neighbourhood[j] - mean[j % channels]);
 }
 
-void apply_loop_gain(float* neighbourhood, uint32_t channels, double gain) {
-  for (uint32_t c = 0; c < channels; ++c) {
-    double mean = 0.0;
-    for (uint32_t j = 0; j < 25; ++j) mean += neighbourhood[j * channels + c];
-    mean /= 25.0;
-    for (uint32_t j = 0; j < 25; ++j)
-      neighbourhood[j * channels + c] = float(mean + gain * (neighbourhood[j * channels + c] - mean));
-  }
+void bring_to_contrast(float* neighbourhood, uint32_t channels, double target) {
+  if (target <= 0.0) return;
+  double mean[4] = {0, 0, 0, 0}, variance = 0.0;
+  for (uint32_t j = 0; j < 25 * channels; ++j) mean[j % channels] += neighbourhood[j] / 25.0;
+  for (uint32_t j = 0; j < 25 * channels; ++j)
+    variance += (neighbourhood[j] - mean[j % channels]) * (neighbourhood[j] - mean[j % channels]) / 25.0;
+  if (variance <= 1e-6 * target) return;  // flat (to rounding): no shape to scale, and a gain above 1000 is noise
+  const double scale = std::sqrt(target / variance);
+  for (uint32_t j = 0; j < 25 * channels; ++j)
+    neighbourhood[j] = float(mean[j % channels] + scale * (neighbourhood[j] - mean[j % channels]));
 }
 
 }  // namespace mbk

@@ -39,8 +39,8 @@ class Synthesizer {
         o_(o),
         L_(g.layout.levels - 1),
         admissible_(admissible_levels(g.layout.exemplars, g.layout.edges, g.layout.levels)),
-        gains_(loop_gains_of_stacks(g.stacks.data(), g.layout.exemplars, g.layout.levels, g.layout.side,
-                                    g.layout.channels)) {}
+        loops_(loop_contrast_of_stacks(g.stacks.data(), g.layout.exemplars, g.layout.levels, g.layout.side,
+                                       g.layout.channels)) {}
 
   Image run(Progress& progress, SynthesisStatistics* stats) {
     const Region window{o_.x, o_.y, o_.x + o_.width, o_.y + o_.height};
@@ -156,10 +156,10 @@ class Synthesizer {
   // Eq. 5.1 for the candidate texel (e, k, cx, cy) with offset b, against the neighbourhood n; the sum stops once
   // it reaches `bound` (the candidate can no longer win: only a strictly smaller error replaces the best).
   double error(const float* n, uint32_t e, uint32_t k, int64_t cx, int64_t cy, const float* b,
-               double bound = std::numeric_limits<double>::infinity(), double gain = 1.0) const {
+               double bound = std::numeric_limits<double>::infinity(), double contrast = 0.0) const {
     const uint32_t m = g_.layout.side, C = g_.layout.channels;
     const int64_t h = spacing(k);
-    if (gain != 1.0) {
+    if (contrast > 0.0) {  // a loop transition (loop_transitions.h)
       float d[25 * 4];
       float* out = d;
       for (int dy = -kReach; dy <= kReach; ++dy)
@@ -167,7 +167,7 @@ class Synthesizer {
           const uint32_t vx = wrap(cx + dx * h, m), vy = wrap(cy + dy * h, m);
           for (uint32_t c = 0; c < C; ++c) *out++ = value(e, k, vx, vy, c);
         }
-      apply_loop_gain(d, C, gain);
+      bring_to_contrast(d, C, contrast);
       double sum = 0.0;
       for (uint32_t j = 0; j < 25 * C; ++j) {
         const double diff = double(n[j]) - (d[j] + b[j % C]);
@@ -205,8 +205,22 @@ class Synthesizer {
         // through a loop, back up its own stack) instead of getting stuck; a level with no admissible level
         // keeps its pixel.
         Pixel best = self;
-        double best_error = allowed(self, self.e, self.k, output_level) ? error(n, self.e, self.k, self.x, self.y, zero)
-                                                                        : std::numeric_limits<double>::infinity();
+        // Deviation [Han08]: a texel one of the 8 neighbours already holds on the same level is not taken (a
+        // coherent neighbour holds a texel one spacing away; the same texel twice magnifies it, and a region of one
+        // texel is its own best match at every later level: issue 18's plateaus).
+        const auto held_by_neighbour = [&](uint32_t e, uint32_t k, uint32_t tx, uint32_t ty) {
+          for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+              if (dx == 0 && dy == 0) continue;
+              const Pixel& q = at(old, r, x + dx, y + dy);
+              if (q.e == e && q.k == k && q.x == tx && q.y == ty) return true;
+            }
+          return false;
+        };
+        double best_error =
+            allowed(self, self.e, self.k, output_level) && !held_by_neighbour(self.e, self.k, self.x, self.y)
+                ? error(n, self.e, self.k, self.x, self.y, zero)
+                : std::numeric_limits<double>::infinity();
         // Coherent neighbours often propose the same texel with the same offset: evaluate each once.
         struct Seen {
           uint32_t e, k, x, y;
@@ -222,7 +236,8 @@ class Synthesizer {
                 (seen[i].b == b || std::equal(b, b + C, seen[i].b)))
               return;
           if (seen_count < 64) seen[seen_count++] = {e, k, wx, wy, b};
-          const double err = error(n, e, k, cx, cy, b, best_error, gains_.gain(self.e, self.k, e, k));
+          if (held_by_neighbour(e, k, wx, wy)) return;
+          const double err = error(n, e, k, cx, cy, b, best_error, loops_.target(self.e, self.k, e, k));
           if (!(err < best_error)) return;
           best_error = err;
           best.e = e;
@@ -281,7 +296,7 @@ class Synthesizer {
   const SynthesisOptions& o_;
   uint32_t L_;
   std::vector<std::vector<std::vector<StackLevel>>> admissible_;
-  LoopGains gains_;
+  LoopContrast loops_;
 };
 
 }  // namespace

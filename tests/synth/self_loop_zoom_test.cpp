@@ -1,12 +1,12 @@
 // Infinite zoom through a 2x self-loop ([Han08] thesis Fig. 5.3; issue 18), with the statistics of
 // tests/synth/texture_statistics.h. At the exemplar's own scale (level 6 of a 64 x 64 exemplar) the self-loop
 // graphs of `gen bumps` and `gen leather` keep >= 90% of the exemplar's variance and each octave band of the spectrum
-// within 0.1 (of the total) of the exemplar's. At depth (levels 8, 14, 20, near the origin and 2^40 pixels away)
-// `gen leather` and the real leather_grain map stay a texture: plateau blocks at most the exemplar's fraction + 5%,
-// median block variance 0.7x (real map 0.55x) to 1.5x the exemplar's, neighbouring block columns/rows within 2x of
-// each other and no pixel line with more than 2x the median step. Not met, so not asserted here: the issue's 0.8x
-// for leather (0.72-0.77x measured) and `gen bumps` at depth, which still falls into flat single-texel regions far
-// from the origin (examples/results/synth/REPORT.md).
+// within 0.1 (of the total) of the exemplar's. At depth (levels 8, 14, 20, near the origin and 2^40 pixels away),
+// 96 x 96 windows: plateau blocks at most the exemplar's fraction + 5%, neighbouring block columns/rows within 2x of
+// each other (no straight regime boundary), median block variance 0.8x to 1.5x the exemplar's and no pixel line
+// with more than 2x the median step for `gen leather` and the real leather_grain map; `gen bumps` meets the plateau
+// and block-line limits, but its median block variance falls to 0.46x and its worst step line to 2.2x at level 20
+// far from the origin, so it is held to 0.4x and 2.5x (the issue's 0.8x is not met there: REPORT.md).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -68,10 +68,10 @@ Image zoom_window(const GraphTables& t, uint32_t level, int64_t x, int64_t y, ui
 }
 
 struct DepthLimits {
-  double plateau_excess;      // plateau fraction above the exemplar's
+  double plateau_excess;           // plateau fraction above the exemplar's
   double median_low, median_high;  // median block variance over the exemplar's
-  double contrast;            // block_line_contrast
-  double step;                // step_line_outlier
+  double contrast;                 // block_line_contrast
+  double step;                     // step_line_outlier
 };
 
 // Windows of 96 x 96 at levels 8, 14 and 20 and origins near and far (2^40 pixels away) against the limits; prints the
@@ -127,8 +127,12 @@ TEST(SelfLoopZoom, AtTheExemplarsOwnScaleKeepsItsVarianceAndSpectrum) {
   expect_exemplar_scale("leather", leather_exemplar(), 0.9, 0.1);
 }
 
+TEST(SelfLoopZoom, BumpsAtEveryDepth) {
+  expect_texture_at_every_depth("bumps", bumps_exemplar(), {0.05, 0.4, 1.5, 2, 2.5});
+}
+
 TEST(SelfLoopZoom, LeatherAtEveryDepth) {
-  expect_texture_at_every_depth("leather", leather_exemplar(), {0.05, 0.7, 1.5, 2, 2});
+  expect_texture_at_every_depth("leather", leather_exemplar(), {0.05, 0.8, 1.5, 2, 2});
 }
 
 TEST(SelfLoopZoom, RealLeatherAtEveryDepth) {
@@ -138,7 +142,7 @@ TEST(SelfLoopZoom, RealLeatherAtEveryDepth) {
     ++maps;
     const Image exemplar = box_reduced(map, 64);
     expect_exemplar_scale(file, exemplar, 0.9, 0.1);
-    expect_texture_at_every_depth(file, exemplar, {0.05, 0.55, 1.5, 2, 2});
+    expect_texture_at_every_depth(file, exemplar, {0.05, 0.8, 1.5, 2, 2});
   });
   if (maps == 0) GTEST_SKIP() << "no leather_grain.png among the real normal maps";
 }

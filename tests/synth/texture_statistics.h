@@ -136,7 +136,8 @@ inline std::vector<double> octave_spectrum(const Image& im) {
       }
     for (uint32_t l = 0; l < n; ++l)
       for (uint32_t k = 0; k < n; ++k) {
-        const double fx = (k <= n / 2 ? double(k) : double(k) - n) / n, fy = (l <= n / 2 ? double(l) : double(l) - n) / n;
+        const double fx = (k <= n / 2 ? double(k) : double(k) - n) / n,
+                     fy = (l <= n / 2 ? double(l) : double(l) - n) / n;
         const double radius = std::hypot(fx, fy);
         if (radius == 0.0) continue;
         const double p = std::norm(full[size_t(l) * n + k]) / (double(n) * n * n * n);  // Parseval: sums to variance
