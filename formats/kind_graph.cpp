@@ -4,7 +4,8 @@
 // Invariants `validate` checks, in this order (the first finding ends the check): parameters and graph metadata
 // (19001), section types and shapes (19002), finite stacks and transfers (19003), every candidate either none (all
 // four words 0xFFFFFFFF) or in range with its (exemplar, level) admissible for its stack level, recomputed from the
-// recorded edges (19004), transfer offsets exactly 0 within one exemplar and where there is no candidate (19005),
+// recorded edges (19004), transfer offsets exactly 0 within one level of one exemplar and where there is no
+// candidate (19005),
 // finite synthesis PCA means and orthonormal bases (19006: |b_p . b_q - delta_pq| <= 1e-4, float storage).
 #include <algorithm>
 #include <cmath>
@@ -75,7 +76,7 @@ void check_graph(const Asset& a, std::vector<Finding>& out) {
           {{"slot", slot}}));
       return;
     }
-    if (none || c[0] == i)
+    if (none || (c[0] == i && c[1] >= k))  // a loop (c[1] < k) carries a transfer, libbake/synth/loop_transitions.h
       for (uint32_t ch = 0; ch < g.channels; ++ch)
         if (transfer[slot * g.channels + ch] != 0.0f) {
           out.push_back(make_finding(msg::graph_bad_transfer,

@@ -191,7 +191,8 @@ inline constexpr MessageInfo graph_non_finite{19003, Severity::error, "graph: no
 inline constexpr MessageInfo graph_bad_candidate{
     19004, Severity::error, "graph: candidate out of range or not in the admissible levels of its stack level"};
 inline constexpr MessageInfo graph_bad_transfer{
-    19005, Severity::error, "graph: transfer offset not zero within one exemplar or where there is no candidate"};
+    19005, Severity::error,
+    "graph: transfer offset not zero within one level of one exemplar or where there is no candidate"};
 inline constexpr MessageInfo graph_bad_pca{19006, Severity::error,
                                            "graph: synthesis PCA mean not finite or basis not orthonormal"};
 }  // namespace msg

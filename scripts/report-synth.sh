@@ -36,7 +36,10 @@ window() {  # level, size, centre at level 6 (x, y) -> X,Y,W,H
   echo "$(( $3 * scale - s / 2 )),$(( $4 * scale - s / 2 )),$s,$s"
 }
 for t in 6 8 10; do "$exe" synth "$work/chain.mbk" --level $t --window "$(window $t 256 100 60)" -q -o "$out/chain_level$t.png"; done
-for t in 6 10 14 18; do "$exe" synth "$work/zoom.mbk" --level $t --window "$(window $t 256 100 60)" -q -o "$out/zoom_level$t.png"; done
+for t in 6 10 14 18 22; do "$exe" synth "$work/zoom.mbk" --level $t --window "$(window $t 256 100 60)" -q -o "$out/zoom_level$t.png"; done
+oiiotool examples/generated/synth_bumps64.png --resize:filter=box 256x256 -o "$out/zoom_exemplar.png"  # 4x, nearest
+# The plateau table (issue 18): the SelfLoopZoom tests print their statistics per level and origin.
+zoom_table=$("$build/tests/microbake_tests" --gtest_filter='SelfLoopZoom.*' 2>&1 | grep -E '^(bumps|leather|  level)' || true)
 "$exe" synth "$work/root_alone.mbk" --level 10 --window "$(window 10 256 100 60)" -q -o "$out/root_alone_level10.png"
 
 # Speed: a 1024 x 1024 window at level 10 of the chain, 2 threads and 1.
@@ -99,6 +102,15 @@ sub-passes, jitter 1, 0.6, 0.4, 0.3, ...).
 | 8192 x 8192 at level 10 as 16 tiles of 2048 x 2048 (2 threads, one process per tile) | ${tiles_s} s in all, $(python3 -c "print('%.2f' % (8192 * 8192 / 1e6 / $tiles_s))") megapixels/s |
 | peak memory of one 2048 x 2048 tile (max RSS) | $((peak / 1024)) MiB |
 | tile corners against separately synthesized 8 x 8 windows (largest difference) | ${seam}, ${seam2} |
+
+Self-loop zoom statistics (\`microbake_tests --gtest_filter='SelfLoopZoom.*'\`, tests/synth/texture_statistics.h;
+96 x 96 windows, 16 x 16 blocks; plateau = block normal variance under 10% of the exemplar's median block
+variance; contrast = the largest ratio of median block variances of neighbouring block columns or rows; step =
+the largest mean squared step across a pixel line over the median line's):
+
+\`\`\`
+${zoom_table}
+\`\`\`
 <!-- synth:end -->
 EOB
 )

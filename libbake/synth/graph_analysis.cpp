@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "libbake/core/parallel.h"
+#include "libbake/synth/loop_transitions.h"
 #include "libbake/synth/neighbourhood_pca.h"
 #include "libbake/synth/neighbourhood_search.h"
 
@@ -56,25 +57,46 @@ GraphAnalysis analyse_graph(const ExemplarGraph& graph, const std::vector<Image>
         stack_neighbourhood(a.stacks[i].images[k], a.stacks[i].spacing(k), x, y, &v[(size_t(y) * m + x) * dims]);
   });
 
+  std::vector<double> contrast(size_t(E) * a.levels);
+  for (uint32_t i = 0; i < E; ++i)
+    for (uint32_t k = 0; k < a.levels; ++k)
+      contrast[size_t(i) * a.levels + k] =
+          neighbourhood_contrast(a.stacks[i].images[k].pixels.data(), m, ch, a.stacks[i].spacing(k));
+  const LoopContrast loops(a.levels, std::move(contrast));
+
   progress.start("analysis", uint64_t(E) * a.levels);
   for (uint32_t i = 0; i < E; ++i)
     for (uint32_t k = 0; k < a.levels; ++k) {
-      const std::vector<StackLevel>& pool_levels = a.admissible[i][k];
+      std::vector<StackLevel> pool_levels;  // the admissible levels correction may move to (loop_transitions.h)
+      for (const StackLevel& l : a.admissible[i][k])
+        if (loop_transition_allowed(i, k, l.exemplar, l.level, a.levels - 1)) pool_levels.push_back(l);
       if (pool_levels.empty()) {
         progress.advance();
         continue;
       }
       std::vector<float> pool;
-      for (const StackLevel& l : pool_levels) {
+      for (const StackLevel& l : pool_levels) {  // loop levels at the source's contrast (loop_transitions.h)
         const std::vector<float>& v = vectors[size_t(l.exemplar) * a.levels + l.level];
+        const size_t start = pool.size();
         pool.insert(pool.end(), v.begin(), v.end());
+        const double target = loops.target(i, k, l.exemplar, l.level);
+        if (target > 0.0)
+          for (size_t n = start; n < pool.size(); n += dims) bring_to_contrast(&pool[n], ch, target);
+      }
+      const std::vector<float>& source = vectors[size_t(i) * a.levels + k];
+      // Where a loop is searched, every match carries its transfer (loop_transitions.h): ranked by the error left
+      // after the best constant offset, i.e. between mean-removed neighbourhoods.
+      std::vector<float> query = source;
+      if (std::any_of(pool_levels.begin(), pool_levels.end(),
+                      [&](const StackLevel& l) { return loops.target(i, k, l.exemplar, l.level) > 0.0; })) {
+        for (size_t n = 0; n < pool.size(); n += dims) remove_neighbourhood_mean(&pool[n], ch);
+        for (size_t n = 0; n < query.size(); n += dims) remove_neighbourhood_mean(&query[n], ch);
       }
       const NeighbourhoodPca pca = fit_pca(pool, dims, options.pca_components);
       a.kept_variance[size_t(i) * a.levels + k] = pca.kept_variance;
       const uint32_t comps = uint32_t(pca.basis.cols());
-      const std::vector<float>& source = vectors[size_t(i) * a.levels + k];
       const std::vector<uint32_t> nearest =
-          nearest_neighbours(pca.project(pool), pca.project(source), comps, kNearestConsidered);
+          nearest_neighbours(pca.project(pool), pca.project(query), comps, kNearestConsidered);
       const uint32_t found = uint32_t(nearest.size() / texels);
       parallel_for(0, int64_t(texels), [&](int64_t t) {
         const size_t base = a.candidate_index(i, k, 0, 0) + size_t(t) * a.K;
@@ -108,7 +130,7 @@ GraphAnalysis analyse_graph(const ExemplarGraph& graph, const std::vector<Image>
           const StackLevel& l = pool_levels[p / texels];
           const uint32_t x = (p % texels) % m, y = uint32_t((p % texels) / m);
           a.candidates[base + chosen] = {l.exemplar, l.level, x, y};
-          if (l.exemplar != i) {  // Sec. 5.3: b = mean(source - destination) over the neighbourhood
+          if (l.exemplar != i || l.level < k) {  // Sec. 5.3: b = mean(source - destination); loops too
             const float* s = &source[size_t(t) * dims];
             const float* d = &vectors[size_t(l.exemplar) * a.levels + l.level][(size_t(y) * m + x) * dims];
             for (uint32_t c = 0; c < ch; ++c) {

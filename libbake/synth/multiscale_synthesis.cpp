@@ -8,6 +8,7 @@
 #include "formats/error.h"
 #include "libbake/core/hash.h"
 #include "libbake/core/parallel.h"
+#include "libbake/synth/loop_transitions.h"
 
 namespace mbk {
 namespace {
@@ -37,7 +38,9 @@ class Synthesizer {
       : g_(g),
         o_(o),
         L_(g.layout.levels - 1),
-        admissible_(admissible_levels(g.layout.exemplars, g.layout.edges, g.layout.levels)) {}
+        admissible_(admissible_levels(g.layout.exemplars, g.layout.edges, g.layout.levels)),
+        loops_(loop_contrast_of_stacks(g.stacks.data(), g.layout.exemplars, g.layout.levels, g.layout.side,
+                                       g.layout.channels)) {}
 
   Image run(Progress& progress, SynthesisStatistics* stats) {
     const Region window{o_.x, o_.y, o_.x + o_.width, o_.y + o_.height};
@@ -60,7 +63,7 @@ class Synthesizer {
       if (t > 0) level = upsample(level, region[t - 1], region[t]);
       jitter(level, region[t], t);
       for (uint32_t pass = 0; pass < o_.passes; ++pass)
-        for (int parity = 0; parity < 4; ++parity) correct(level, region[t], parity);
+        for (int parity = 0; parity < 4; ++parity) correct(level, region[t], parity, t == o_.level);
       if (stats) stats->matching_error.push_back(mean_error(level, region[t]));
       progress.advance(level.size());
     }
@@ -153,9 +156,26 @@ class Synthesizer {
   // Eq. 5.1 for the candidate texel (e, k, cx, cy) with offset b, against the neighbourhood n; the sum stops once
   // it reaches `bound` (the candidate can no longer win: only a strictly smaller error replaces the best).
   double error(const float* n, uint32_t e, uint32_t k, int64_t cx, int64_t cy, const float* b,
-               double bound = std::numeric_limits<double>::infinity()) const {
+               double bound = std::numeric_limits<double>::infinity(), double contrast = 0.0) const {
     const uint32_t m = g_.layout.side, C = g_.layout.channels;
     const int64_t h = spacing(k);
+    if (contrast > 0.0) {  // a loop transition (loop_transitions.h)
+      float d[25 * 4];
+      float* out = d;
+      for (int dy = -kReach; dy <= kReach; ++dy)
+        for (int dx = -kReach; dx <= kReach; ++dx) {
+          const uint32_t vx = wrap(cx + dx * h, m), vy = wrap(cy + dy * h, m);
+          for (uint32_t c = 0; c < C; ++c) *out++ = value(e, k, vx, vy, c);
+        }
+      bring_to_contrast(d, C, contrast);
+      double sum = 0.0;
+      for (uint32_t j = 0; j < 25 * C; ++j) {
+        const double diff = double(n[j]) - (d[j] + b[j % C]);
+        sum += diff * diff;
+        if (sum >= bound) return sum;
+      }
+      return sum;
+    }
     double sum = 0.0;
     for (int dy = -kReach; dy <= kReach; ++dy)
       for (int dx = -kReach; dx <= kReach; ++dx) {
@@ -169,7 +189,7 @@ class Synthesizer {
     return sum;
   }
 
-  void correct(std::vector<Pixel>& s, const Region& r, int parity) const {
+  void correct(std::vector<Pixel>& s, const Region& r, int parity, bool output_level) const {
     const uint32_t m = g_.layout.side, C = g_.layout.channels, K = g_.layout.candidates;
     const std::vector<Pixel> old = s;
     const float zero[4] = {0, 0, 0, 0};
@@ -185,8 +205,22 @@ class Synthesizer {
         // through a loop, back up its own stack) instead of getting stuck; a level with no admissible level
         // keeps its pixel.
         Pixel best = self;
-        double best_error = allowed(self, self.e, self.k) ? error(n, self.e, self.k, self.x, self.y, zero)
-                                                          : std::numeric_limits<double>::infinity();
+        // Deviation [Han08]: a texel one of the 8 neighbours already holds on the same level is not taken (a
+        // coherent neighbour holds a texel one spacing away; the same texel twice magnifies it, and a region of one
+        // texel is its own best match at every later level: issue 18's plateaus).
+        const auto held_by_neighbour = [&](uint32_t e, uint32_t k, uint32_t tx, uint32_t ty) {
+          for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+              if (dx == 0 && dy == 0) continue;
+              const Pixel& q = at(old, r, x + dx, y + dy);
+              if (q.e == e && q.k == k && q.x == tx && q.y == ty) return true;
+            }
+          return false;
+        };
+        double best_error =
+            allowed(self, self.e, self.k, output_level) && !held_by_neighbour(self.e, self.k, self.x, self.y)
+                ? error(n, self.e, self.k, self.x, self.y, zero)
+                : std::numeric_limits<double>::infinity();
         // Coherent neighbours often propose the same texel with the same offset: evaluate each once.
         struct Seen {
           uint32_t e, k, x, y;
@@ -195,14 +229,15 @@ class Synthesizer {
         Seen seen[64] = {{self.e, self.k, self.x, self.y, zero}};
         int seen_count = 1;
         const auto consider = [&](uint32_t e, uint32_t k, int64_t cx, int64_t cy, const float* b) {
-          if (!allowed(self, e, k)) return;
+          if (!allowed(self, e, k, output_level)) return;
           const uint32_t wx = wrap(cx, m), wy = wrap(cy, m);
           for (int i = 0; i < seen_count; ++i)
             if (seen[i].e == e && seen[i].k == k && seen[i].x == wx && seen[i].y == wy &&
                 (seen[i].b == b || std::equal(b, b + C, seen[i].b)))
               return;
           if (seen_count < 64) seen[seen_count++] = {e, k, wx, wy, b};
-          const double err = error(n, e, k, cx, cy, b, best_error);
+          if (held_by_neighbour(e, k, wx, wy)) return;
+          const double err = error(n, e, k, cx, cy, b, best_error, loops_.target(self.e, self.k, e, k));
           if (!(err < best_error)) return;
           best_error = err;
           best.e = e;
@@ -250,7 +285,9 @@ class Synthesizer {
   // edge of r >= 1).
   bool stuck(const Pixel& p) const { return p.k == L_ && admissible_[p.e][L_].empty(); }
 
-  bool allowed(const Pixel& at, uint32_t e, uint32_t k) const {
+  bool allowed(const Pixel& at, uint32_t e, uint32_t k, bool output_level) const {
+    if (output_level && e == at.e && k == L_ && at.k == L_) return true;
+    if (!loop_transition_allowed(at.e, at.k, e, k, L_)) return false;
     const auto& set = admissible_[at.e][at.k];
     return std::find(set.begin(), set.end(), StackLevel{e, k}) != set.end();
   }
@@ -259,6 +296,7 @@ class Synthesizer {
   const SynthesisOptions& o_;
   uint32_t L_;
   std::vector<std::vector<std::vector<StackLevel>>> admissible_;
+  LoopContrast loops_;
 };
 
 }  // namespace

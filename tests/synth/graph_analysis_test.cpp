@@ -12,6 +12,7 @@
 
 #include "libbake/core/parallel.h"
 #include "libbake/synth/graph_analysis.h"
+#include "libbake/synth/loop_transitions.h"
 #include "libbake/synth/neighbourhood_pca.h"
 
 namespace mbk {
@@ -86,6 +87,31 @@ double squared_distance(const std::vector<float>& a, const std::vector<float>& b
   return s;
 }
 
+// The mean 5 x 5 neighbourhood variance of a level: 0 when constant; for a checkerboard of +-1 at spacing 1 every
+// neighbourhood holds 13 of one sign and 12 of the other (variance 1 - 1/625), at spacing 2 one colour (0).
+TEST(LoopTransitions, NeighbourhoodContrastOfConstantAndCheckerboard) {
+  const uint32_t m = 8;
+  std::vector<float> flat(m * m, 0.25f), board(m * m);
+  for (uint32_t y = 0; y < m; ++y)
+    for (uint32_t x = 0; x < m; ++x) board[y * m + x] = (x + y) % 2 ? 1.0f : -1.0f;
+  EXPECT_EQ(neighbourhood_contrast(flat.data(), m, 1, 1), 0.0);
+  EXPECT_NEAR(neighbourhood_contrast(board.data(), m, 1, 1), 1.0 - 1.0 / 625.0, 1e-12);
+  EXPECT_EQ(neighbourhood_contrast(board.data(), m, 1, 2), 0.0);
+  // bring_to_contrast keeps a neighbourhood's mean and scales its deviations to the target variance: 0..24 has
+  // variance 52, so target 13 halves them; a constant neighbourhood stays.
+  std::vector<float> v(25), flat25(25, 0.5f);
+  for (uint32_t j = 0; j < 25; ++j) v[j] = float(j);
+  bring_to_contrast(v.data(), 1, 13.0);
+  for (uint32_t j = 0; j < 25; ++j) EXPECT_NEAR(v[j], 12.0 + 0.5 * (double(j) - 12.0), 1e-5);
+  bring_to_contrast(flat25.data(), 1, 13.0);
+  for (float f : flat25) EXPECT_EQ(f, 0.5f);
+  // Loops below the finest level are refused, other transitions kept.
+  EXPECT_FALSE(loop_transition_allowed(0, 3, 0, 2, 6));
+  EXPECT_TRUE(loop_transition_allowed(0, 6, 0, 5, 6));
+  EXPECT_TRUE(loop_transition_allowed(0, 3, 0, 3, 6));
+  EXPECT_TRUE(loop_transition_allowed(0, 3, 1, 1, 6));
+}
+
 TEST(GraphAnalysis, FirstCandidateIsTheBruteForceNearestInPcaSpaceAndOthersAdmissibleDistinctAndMostlyDispersed) {
   const uint32_t m = 16;
   TwoExemplarGraph g(m);
@@ -96,7 +122,9 @@ TEST(GraphAnalysis, FirstCandidateIsTheBruteForceNearestInPcaSpaceAndOthersAdmis
   size_t checked = 0, same_level = 0, dispersed = 0, second_checked = 0;
   for (uint32_t i = 0; i < 2; ++i)
     for (uint32_t k = 0; k < a.levels; ++k) {
-      const auto& pool_levels = a.admissible[i][k];
+      std::vector<StackLevel> pool_levels;  // loops only from the finest level (loop_transitions.h)
+      for (const StackLevel& l : a.admissible[i][k])
+        if (loop_transition_allowed(i, k, l.exemplar, l.level, a.levels - 1)) pool_levels.push_back(l);
       if (pool_levels.empty()) {
         EXPECT_EQ(a.candidates[a.candidate_index(i, k, 0, 0)].exemplar, kNoCandidate);
         continue;
@@ -109,11 +137,22 @@ TEST(GraphAnalysis, FirstCandidateIsTheBruteForceNearestInPcaSpaceAndOthersAdmis
             std::vector<float> v(dims);
             stack_neighbourhood(a.stacks[l.exemplar].images[l.level], a.stacks[l.exemplar].spacing(l.level), x, y,
                                 v.data());
+            if (l.exemplar == i && l.level < k)  // a loop: at the source level's contrast
+              bring_to_contrast(
+                  v.data(), ch,
+                  neighbourhood_contrast(a.stacks[i].images[k].pixels.data(), m, ch, a.stacks[i].spacing(k)));
             pool.insert(pool.end(), v.begin(), v.end());
           }
       for (uint32_t y = 0; y < m; ++y)
         for (uint32_t x = 0; x < m; ++x)
           stack_neighbourhood(a.stacks[i].images[k], a.stacks[i].spacing(k), x, y, &source[(size_t(y) * m + x) * dims]);
+      // With a loop in the pool, every vector mean-removed (matches ranked after their transfers).
+      bool loop = false;
+      for (const StackLevel& l : pool_levels) loop = loop || (l.exemplar == i && l.level < k);
+      if (loop) {
+        for (size_t n = 0; n < pool.size(); n += dims) remove_neighbourhood_mean(&pool[n], ch);
+        for (size_t n = 0; n < source.size(); n += dims) remove_neighbourhood_mean(&source[n], ch);
+      }
       const NeighbourhoodPca pca = fit_pca(pool, dims, options.pca_components);
       const std::vector<float> p = pca.project(pool), q = pca.project(source);
       const uint32_t comps = uint32_t(pca.basis.cols());
@@ -201,7 +240,7 @@ TEST(GraphAnalysis, TransferFunctionsAreTheMeanNeighbourhoodDifference_ZeroWithi
             for (uint32_t ch = 0; ch < 3; ++ch) {
               double b = 0.0;
               for (uint32_t j = 0; j < 25; ++j) b += (s[j * 3 + ch] - d[j * 3 + ch]) / 25.0;
-              if (c.exemplar == i) {
+              if (c.exemplar == i && c.level >= k) {  // within a level: none; across a loop as across exemplars
                 EXPECT_EQ(a.transfer[at * 3 + ch], 0.0f);
               } else {
                 EXPECT_NEAR(a.transfer[at * 3 + ch], b, 1e-6);
