@@ -6,6 +6,7 @@
 #include <string>
 
 #include "formats/error.h"
+#include "formats/number_text.h"
 
 namespace mbk {
 
@@ -20,8 +21,8 @@ double rmq_dequantize(uint32_t code, const RmqRange& range, uint32_t bits) {
 
 uint32_t rmq_quantize_up(double v, const RmqRange& range, uint32_t bits) {
   if (!(v >= range.lo && v <= range.hi))
-    throw Error(ExitCode::runtime_failure, "internal: rmq value " + std::to_string(v) + " outside its range [" +
-                                               std::to_string(range.lo) + ", " + std::to_string(range.hi) + "]");
+    throw Error(ExitCode::runtime_failure, "internal: rmq value " + number_text(v) + " outside its range [" +
+                                               number_text(range.lo) + ", " + number_text(range.hi) + "]");
   const uint32_t q_max = rmq_code_max(bits);
   auto value = [&](uint32_t q) { return rmq_dequantize(q, range, bits); };
   // Fast path: the arithmetic guess is almost always the answer (at most one code off after rounding).
