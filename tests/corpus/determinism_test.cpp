@@ -35,7 +35,8 @@ class Determinism : public ::testing::Test {
              {"gen", "bumps", "--size", "16", "-q", "-o", "bumps.png"},
              {"gen", "leather", "--size", "16", "--seed", "2", "-q", "-o", "leather.png"},
              {"gen", "panels", "--size", "32", "-q", "-o", "panels.png", "--creases", "panels.json"},
-             {"graph", "graph.json", "-q", "-o", "graph.mbk"}}) {
+             {"graph", "graph.json", "-q", "-o", "graph.mbk"},
+             {"bake", "mip_scene.json", "-q"}}) {  // the assets render reads
       const test::Run r = test::run_microbake(args, dir_->path());
       ASSERT_EQ(r.exit_code, 0) << args[0] << ": " << r.err;
     }
