@@ -66,7 +66,7 @@ class BakeCommand : public Command {
       std::string action = "skipped";
       if (fresh.state != AssetState::up_to_date) {
         // The bar counts assets; a long bake inside one asset stays quiet.
-        OutputOption{file.string()}.write_asset(a.recipe.bake(Progress::silent()));
+        OutputOption{file.string()}.write_asset(bake_from_scene(a));
         action = fresh.state == AssetState::missing ? "baked" : "rebuilt";
       }
       progress.advance();
@@ -90,6 +90,19 @@ class BakeCommand : public Command {
   }
 
  private:
+  // The library's checks of bake options are worded for the command line (Error bad_command_line); here the
+  // options came from the scene file, so a refused one is invalid input at the effect that set it.
+  AssetWriter bake_from_scene(const PlannedAsset& a) const {
+    try {
+      return a.recipe.bake(Progress::silent());
+    } catch (const Error& e) {
+      if (e.code() != ExitCode::bad_command_line) throw;
+      const AssetUse& use = a.uses.front();
+      throw Error(ExitCode::invalid_input, e.what() + std::string(" (an option of effect '") + use.effect + "')",
+                  options_.scene + ": " + json_child_path(json_child_path("materials", use.material), "effects"));
+    }
+  }
+
   struct Options {
     std::string scene;
     std::string out_dir;

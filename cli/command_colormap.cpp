@@ -40,7 +40,7 @@ class ColormapCommand : public Command {
         ->default_val("256x256");
     app.add_option("--sigma-max", options_.sigma_max,
                    "Largest standard deviation tabulated (driver units); default: half the map's domain")
-        ->check(CLI::PositiveNumber);
+        ->check(finite_number(1e-12));
     app.add_option("--encoding", options_.encoding,
                    "Colour encoding of MAP: auto (integer images and JSON default sRGB, float images linear), "
                    "srgb or linear")

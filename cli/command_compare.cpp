@@ -10,6 +10,8 @@
 #include "cli/common_options.h"
 #include "formats/error.h"
 #include "libbake/eval/image_difference.h"
+#include "libbake/image/image_io.h"
+#include "libbake/image/normal_map.h"
 
 namespace mbk::cli {
 namespace {
@@ -20,8 +22,7 @@ class CompareCommand : public Command {
     app.add_option("a", options_.a, "Image to assess (any format OpenImageIO reads)")->required();
     app.add_option("b", options_.b, "Reference image, same size and channels")->required();
     add_format_option(app, options_.format);
-    app.add_option("--max-rmse", options_.max_rmse, "Exit 6 when the RMSE is above this")
-        ->check(CLI::NonNegativeNumber);
+    app.add_option("--max-rmse", options_.max_rmse, "Exit 6 when the RMSE is above this")->check(finite_number(0.0));
     app.add_option("--block", options_.block,
                    "Side in pixels of the blocks of the block_relative_l1 metric (sum |block mean A - block mean B| "
                    "/ sum |block mean B|)")
@@ -30,6 +31,9 @@ class CompareCommand : public Command {
   }
 
   int run() override {
+    // Sizes come from the headers first, so that a file declaring a huge image is refused before it is decoded.
+    for (const std::string& path : {options_.a, options_.b})
+      (void)read_image_header_within(path, kMaxNormalMapSide, "image");
     ImageFileInfo info_a, info_b;
     const Image a = load_image(options_.a, &info_a), b = load_image(options_.b, &info_b);
     // An integer file (PNG) holds display-encoded values, a float file (EXR) linear radiance: their

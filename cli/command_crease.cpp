@@ -30,7 +30,7 @@ class CreaseCommand : public Command {
     app.add_option("--band", options_.bake.band,
                    "Texels around the curves where the distance map is exact by brute force (beyond: nearest-segment "
                    "propagation)")
-        ->check(CLI::Range(1e-6, 1e6))
+        ->check(finite_number(1e-6, 1e6))
         ->default_val(kCreaseDefaultBand);
     add_run_options(app, options_.run);
   }

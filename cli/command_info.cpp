@@ -108,6 +108,10 @@ class InfoCommand : public Command {
     if (!all_ok)
       throw Error(ExitCode::invalid_input, "a section checksum does not match (see 'microbake validate')",
                   options_.file);
+    // Listed, yet not an asset of its kind: a required section is missing or of the wrong type.
+    std::vector<Finding> section_findings;
+    check_sections(p, bytes, section_findings);
+    throw_first_error(section_findings, options_.file);
     return 0;
   }
 

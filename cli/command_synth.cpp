@@ -36,7 +36,7 @@ std::vector<double> comma_separated(const std::string& text, const std::string& 
       used = std::string::npos;
     }
     if (part.empty() || std::isspace(static_cast<unsigned char>(part[0])) || used != part.size() || !accept(v))
-      throw Error(ExitCode::bad_command_line, option + ": '" + part + "' is not " + expected);
+      throw Error(ExitCode::bad_command_line, option + ": '" + part + "' is not " + expected, option);
     values.push_back(v);
   }
   return values;
@@ -75,7 +75,7 @@ class SynthCommand : public Command {
     const std::vector<double> w = comma_separated(options_.window, "--window", "an integer",
                                                   [](double v) { return v == std::floor(v) && std::abs(v) <= 0x1p62; });
     if (w.size() != 4 || w[2] < 1 || w[3] < 1 || w[2] > 65536 || w[3] > 65536)
-      throw Error(ExitCode::bad_command_line, "--window must be X,Y,W,H with 1 <= W, H <= 65536");
+      throw Error(ExitCode::bad_command_line, "--window must be X,Y,W,H with 1 <= W, H <= 65536", "--window");
     options_.synthesis.x = int64_t(w[0]);
     options_.synthesis.y = int64_t(w[1]);
     options_.synthesis.width = uint32_t(w[2]);

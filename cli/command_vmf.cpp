@@ -25,13 +25,13 @@ class VmfCommand : public Command {
         ->default_val(kVmfDefaultLobes);
     app.add_option("--align", options_.bake.em.align,
                    "Coherence weight C of [Han07] Eq. 7.26 (0: lobes are only ordered to match their neighbours)")
-        ->check(CLI::Range(0.0, 1e6))
+        ->check(finite_number(0.0, 1e6))
         ->default_val(0.0);
     app.add_option("--material", options_.material,
                    "Colour/material image of the map's size (1-4 channels) averaged per lobe ([Han07] Eq. 7.25)");
     app.add_option("--tolerance", options_.bake.em.tolerance,
                    "EM stops when the mean log-likelihood per normal rises by less than this")
-        ->check(CLI::Range(1e-15, 1.0))
+        ->check(finite_number(1e-15, 1.0))
         ->default_val(1e-6);
     app.add_option("--max-iterations", options_.bake.em.max_iterations, "EM iterations at most per texel and start")
         ->check(CLI::Range(1, 100000))

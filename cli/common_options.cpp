@@ -1,6 +1,7 @@
 // Shared options (see common_options.h).
 #include "cli/common_options.h"
 
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <set>
@@ -41,6 +42,31 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--progress", o.progress, "Progress bar on stderr: auto (only on a terminal), always, never")
       ->check(CLI::IsMember({"auto", "always", "never"}))
       ->default_val("auto");
+}
+
+CLI::Validator finite_number(double lo, double hi) {
+  auto short_form = [](double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", x);
+    return std::string(text);
+  };
+  const std::string range = hi == std::numeric_limits<double>::max()
+                                ? "a finite number >= " + short_form(lo)
+                                : "a number in [" + short_form(lo) + ", " + short_form(hi) + "]";
+  return CLI::Validator(
+      [=](std::string& value) -> std::string {
+        double x = 0.0;
+        size_t used = 0;
+        try {
+          x = std::stod(value, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used == 0 || used != value.size() || !std::isfinite(x) || x < lo || x > hi)
+          return "'" + (value.size() > 40 ? value.substr(0, 37) + "..." : value) + "' is not " + range;
+        return {};
+      },
+      range, "finite number");
 }
 
 void add_format_option(CLI::App& app, OutputFormat& format) {

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <ostream>
 #include <string>
 
@@ -28,6 +29,10 @@ struct RunOptions {
   void apply() const;
 };
 void add_run_options(CLI::App& app, RunOptions& options);
+
+// The check of every real-valued option: a finite number inside [lo, hi] (CLI11's own ranges let NaN through).
+// Bounds and values are printed in short form (%g), never as hundreds of digits.
+CLI::Validator finite_number(double lo, double hi = std::numeric_limits<double>::max());
 
 enum class OutputFormat { text, json };
 void add_format_option(CLI::App& app, OutputFormat& format);

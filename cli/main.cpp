@@ -43,6 +43,14 @@ std::vector<CommandEntry> command_table() {
   };
 }
 
+// An empty value is never a number, a path or a choice: CLI11 would read "" as 0 for numbers.
+void refuse_empty_values(CLI::App& sub) {
+  const CLI::Validator non_empty([](std::string& value) { return value.empty() ? "an empty value" : std::string(); },
+                                 "", "non-empty");
+  for (CLI::Option* option : sub.get_options())
+    if (option->get_expected_min() > 0) option->check(non_empty);
+}
+
 int report(const std::string& message, ExitCode code) {
   std::fprintf(stderr, "microbake: error: %s\n", message.c_str());
   return static_cast<int>(code);
@@ -65,6 +73,7 @@ int main_impl(int argc, char** argv) {
     commands.push_back(entry.make());
     CLI::App* sub = app.add_subcommand(entry.name, entry.summary);
     commands.back()->add_options(*sub);
+    refuse_empty_values(*sub);
     subcommands.push_back(sub);
   }
   try {
@@ -82,6 +91,15 @@ int main_impl(int argc, char** argv) {
       if (sub->parsed()) where = "see 'microbake " + sub->get_name() + " --help'";
     return report(what + " (" + where + ")", ExitCode::bad_command_line);
   }
+  // Every error names where it happened; one that no helper located is placed in the command (a command-line
+  // mistake: in its options, pointing at its help).
+  std::string command = "microbake";
+  for (auto* sub : subcommands)
+    if (sub->parsed()) command = "microbake " + sub->get_name();
+  auto located = [&](const Error& e) {
+    if (!e.where().empty()) return e;
+    return Error(e.code(), e.what(), e.code() == ExitCode::bad_command_line ? "see '" + command + " --help'" : command);
+  };
   try {
     for (size_t i = 0; i < subcommands.size(); ++i) {
       if (!subcommands[i]->parsed()) continue;
@@ -90,11 +108,12 @@ int main_impl(int argc, char** argv) {
     }
     return report("no command given (see 'microbake --help')", ExitCode::bad_command_line);
   } catch (const Error& e) {
-    return report(e.message(), e.code());
+    const Error where_known = located(e);
+    return report(where_known.message(), where_known.code());
   } catch (const std::bad_alloc&) {
-    return report("out of memory", ExitCode::runtime_failure);
+    return report("out of memory (" + command + ")", ExitCode::runtime_failure);
   } catch (const std::exception& e) {
-    return report(std::string("internal error: ") + e.what(), ExitCode::runtime_failure);
+    return report(std::string("internal error: ") + e.what() + " (" + command + ")", ExitCode::runtime_failure);
   }
 }
 

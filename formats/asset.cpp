@@ -255,6 +255,14 @@ void check_sections(const ParsedContainer& p, std::span<const uint8_t> bytes, st
 Asset Asset::open(const std::filesystem::path& path) { return parse(read_file_bytes(path), path.string()); }
 
 Asset Asset::parse(std::vector<uint8_t> bytes, const std::string& where) {
+  Asset a = parse_structure(std::move(bytes), where);
+  std::vector<Finding> findings;
+  check_kind_invariants(a, findings);
+  throw_first_error(findings, where);
+  return a;
+}
+
+Asset Asset::parse_structure(std::vector<uint8_t> bytes, const std::string& where) {
   std::vector<Finding> findings;
   auto parsed = parse_container(bytes, findings);
   if (parsed) check_sections(*parsed, bytes, findings);

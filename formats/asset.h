@@ -1,8 +1,8 @@
 // Reading .mbk files (formats/SPEC.md). parse_container() checks structure and reports findings without
-// throwing; Asset::open()/parse() build on it, verify every checksum and the kind's required sections, and
-// throw the first error as mbk::Error: io_failure (2) for unreadable files, invalid_input (3) for corrupt
-// ones, unsupported (5) for a newer major version. The reader never trusts an offset, size or shape
-// product before bounds-checking it, and never crashes on any byte string (tests/formats fuzz it).
+// throwing; Asset::open()/parse() build on it, verify every checksum, the kind's required sections and its
+// invariants (formats/validate.h), and throw the first error as mbk::Error: io_failure (2) for unreadable files,
+// invalid_input (3) for corrupt ones, unsupported (5) for a newer major version. The reader never trusts an offset,
+// size or shape product before bounds-checking it, and never crashes on any byte string (tests/formats fuzz it).
 #pragma once
 
 #include <cstdint>
@@ -37,10 +37,13 @@ void check_sections(const ParsedContainer& parsed, std::span<const uint8_t> byte
 
 class Asset {
  public:
-  // Reads and checks a whole file; `where` in errors is the path.
+  // Reads and checks a whole file, the kind's invariants included (those `validate` checks), so that no reader
+  // (render, bake's freshness check, synth) uses an asset that `validate` rejects; `where` in errors is the path.
   static Asset open(const std::filesystem::path& path);
-  // Checks bytes already in memory; `where` names them in errors.
+  // Checks bytes already in memory as open() does; `where` names them in errors.
   static Asset parse(std::vector<uint8_t> bytes, const std::string& where);
+  // parse() without the kind's invariants: for `validate`, which reports those as findings itself.
+  static Asset parse_structure(std::vector<uint8_t> bytes, const std::string& where);
 
   const ContainerHeader& header() const { return parsed_.header; }
   const nlohmann::json& metadata() const { return parsed_.metadata; }

@@ -32,7 +32,8 @@ struct AssetKind {
   // Whether a section name belongs to this kind (required or optional). Unknown ones get a warning.
   std::function<bool(const std::string&)> knows_section;
   // Appends findings about the kind's invariants. Called only on structurally sound assets whose
-  // required sections exist with the right types and whose checksums match.
+  // required sections exist with the right types and whose checksums match, by `validate` and by every reader
+  // (Asset::open/parse), so they must stay cheap next to reading the file.
   std::function<void(const Asset&, std::vector<Finding>&)> check_invariants;
 };
 

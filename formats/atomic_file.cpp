@@ -2,6 +2,7 @@
 #include "formats/atomic_file.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -27,6 +28,34 @@ void fsync_path(const fs::path& path) {
   if (rc != 0)
     throw Error(ExitCode::io_failure, std::string("cannot flush output: ") + std::strerror(errno), path.string());
 }
+// The pid in `name` when it is a temporary of `destination` (".<stem>.partial-<pid>-<n><ext>"), else 0.
+pid_t temporary_owner(const std::string& name, const fs::path& destination) {
+  const std::string prefix = "." + destination.stem().string() + ".partial-", ext = destination.extension().string();
+  if (name.size() <= prefix.size() + ext.size() || name.compare(0, prefix.size(), prefix) != 0 ||
+      name.compare(name.size() - ext.size(), ext.size(), ext) != 0)
+    return 0;
+  const std::string middle = name.substr(prefix.size(), name.size() - prefix.size() - ext.size());  // "<pid>-<n>"
+  const size_t dash = middle.find('-');
+  if (dash == 0 || dash == std::string::npos || dash > 9 || dash + 1 == middle.size() ||
+      middle.find_first_not_of("0123456789-") != std::string::npos || middle.find('-', dash + 1) != std::string::npos)
+    return 0;
+  return pid_t(std::stol(middle.substr(0, dash)));
+}
+
+// A command killed while writing (SIGKILL, power loss) leaves its temporary behind. The next command writing the
+// same destination removes those whose process is gone; a temporary of a live process (another command writing
+// the same output right now, or a reused pid) is left alone, so cleaning never races a writer.
+void remove_stale_temporaries(const fs::path& dir, const fs::path& destination) {
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const pid_t owner = temporary_owner(it->path().filename().string(), destination);
+    if (owner <= 0 || owner == ::getpid()) continue;
+    if (::kill(owner, 0) == 0 || errno != ESRCH) continue;  // alive, or not ours to signal: keep
+    std::error_code ignored;
+    fs::remove(it->path(), ignored);
+  }
+}
+
 }  // namespace
 
 AtomicFile::AtomicFile(fs::path destination) : destination_(std::move(destination)) {
@@ -39,6 +68,7 @@ AtomicFile::AtomicFile(fs::path destination) : destination_(std::move(destinatio
   std::string name = "." + destination_.stem().string() + ".partial-" + std::to_string(::getpid()) + "-" +
                      std::to_string(g_counter++) + destination_.extension().string();
   temporary_ = dir / name;
+  remove_stale_temporaries(dir, destination_);
 }
 
 AtomicFile::~AtomicFile() {
@@ -51,12 +81,21 @@ AtomicFile::~AtomicFile() {
 void AtomicFile::write_all(std::span<const uint8_t> bytes) { write_all(std::vector{bytes}); }
 
 void AtomicFile::write_all(const std::vector<std::span<const uint8_t>>& pieces) {
-  std::ofstream out(temporary_, std::ios::binary | std::ios::trunc);
-  if (!out) throw Error(ExitCode::io_failure, "cannot create output file", destination_.string());
+  write_file_pieces(temporary_, pieces, destination_.string());
+}
+
+void write_file_bytes(const fs::path& path, std::span<const uint8_t> bytes, const std::string& where) {
+  write_file_pieces(path, {bytes}, where);
+}
+
+void write_file_pieces(const fs::path& path, const std::vector<std::span<const uint8_t>>& pieces,
+                       const std::string& where) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) throw Error(ExitCode::io_failure, "cannot create output file", where);
   for (std::span<const uint8_t> piece : pieces)
     out.write(reinterpret_cast<const char*>(piece.data()), static_cast<std::streamsize>(piece.size()));
   out.close();
-  if (!out) throw Error(ExitCode::io_failure, "cannot write output file (disk full?)", destination_.string());
+  if (!out) throw Error(ExitCode::io_failure, "cannot write output file (disk full?)", where);
 }
 
 void AtomicFile::commit() {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "formats/asset.h"
+#include "formats/number_text.h"
 #include "formats/error.h"
 
 namespace mbk {
@@ -44,8 +45,8 @@ std::string colormap_curve_problem(const ColormapCurve& curve) {
     for (double c : curve.colors[k])
       if (!std::isfinite(c)) return "colour " + std::to_string(k) + " is not finite";
     if (k > 0 && curve.knots[k] < curve.knots[k - 1])
-      return "knot " + std::to_string(k) + " (" + std::to_string(curve.knots[k]) + ") is below knot " +
-             std::to_string(k - 1) + " (" + std::to_string(curve.knots[k - 1]) + ")";
+      return "knot " + std::to_string(k) + " (" + number_text(curve.knots[k]) + ") is below knot " +
+             std::to_string(k - 1) + " (" + number_text(curve.knots[k - 1]) + ")";
     if (k > 1 && curve.knots[k] == curve.knots[k - 2])
       return "knots " + std::to_string(k - 2) + ".." + std::to_string(k) + " share one position";
   }

@@ -4,7 +4,6 @@
 #include "formats/asset.h"
 #include "formats/asset_kind.h"
 #include "formats/error.h"
-#include "formats/validate.h"
 
 namespace mbk {
 
@@ -92,11 +91,8 @@ GraphTables read_graph_tables(const Asset& asset) {
   std::string problem = parse_graph_layout(asset, t.layout);
   if (problem.empty()) problem = check_graph_section_shapes(asset, t.layout);
   if (!problem.empty()) throw Error(ExitCode::invalid_input, "malformed graph asset: " + problem, asset.where());
-  // Synthesis indexes stacks with these words: a file that fails the kind's invariants (a resealed, edited
-  // candidate) is refused here rather than read out of bounds.
-  std::vector<Finding> findings;
-  asset.kind().check_invariants(asset, findings);
-  throw_first_error(findings, asset.where());
+  // Synthesis indexes stacks with the candidate words: Asset::open/parse already refused a file that fails the
+  // kind's invariants (a resealed, edited candidate) rather than let it be read out of bounds.
   t.stacks = asset.read<float>(kGraphStacksSection);
   t.candidates = asset.read<uint32_t>(kGraphCandidatesSection);
   t.transfer = asset.read<float>(kGraphTransferSection);

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <string>
 
+#include "formats/number_text.h"
 #include "formats/asset.h"
 #include "formats/asset_kind.h"
 #include "formats/colormap_layout.h"
@@ -50,7 +51,7 @@ void check_colormap(const Asset& a, std::vector<Finding>& out) {
   for (const auto& [name, shape] : shapes)
     if (a.section(std::string(name)).shape != shape) {
       std::string dims;
-      for (uint64_t d : shape) dims += (dims.empty() ? "" : ", ") + std::to_string(d);
+      for (uint64_t d : shape) dims += (dims.empty() ? "" : ", ") + number_text(d);
       out.push_back(make_finding(msg::colormap_section_shape,
                                  "'" + std::string(name) + "' should be f32 [" + dims + "]", {{"section", name}}));
       return;
@@ -60,7 +61,7 @@ void check_colormap(const Asset& a, std::vector<Finding>& out) {
     data.push_back(a.read<float>(std::string(name)));
     for (size_t i = 0; i < data.back().size(); ++i)
       if (!std::isfinite(data.back()[i])) {
-        out.push_back(make_finding(msg::colormap_non_finite, "'" + std::string(name) + "' element " + std::to_string(i),
+        out.push_back(make_finding(msg::colormap_non_finite, "'" + std::string(name) + "' element " + number_text(i),
                                    {{"section", name}, {"index", i}}));
         return;
       }
@@ -97,8 +98,8 @@ void check_colormap(const Asset& a, std::vector<Finding>& out) {
     return nlohmann::json{{"section", kColormapTableSection}, {"row", j}, {"column", i}};
   };
   auto at = [&](uint32_t j, uint32_t i, int c) {
-    return "entry (sigma row " + std::to_string(j) + ", mean column " + std::to_string(i) + ") channel " +
-           std::to_string(c) + " is " + std::to_string(entry(j, i, c));
+    return "entry (sigma row " + number_text(j) + ", mean column " + number_text(i) + ") channel " + number_text(c) +
+           " is " + number_text(entry(j, i, c));
   };
   for (uint32_t i = 0; i < W; ++i) {
     const auto expected = curve.at(table.mean_at(i));
@@ -106,8 +107,7 @@ void check_colormap(const Asset& a, std::vector<Finding>& out) {
       if (std::abs(entry(0, i, c) - expected[c]) > tolerance) {
         out.push_back(make_finding(
             msg::colormap_row0_not_map,
-            at(0, i, c) + ", C(" + std::to_string(table.mean_at(i)) + ") is " + std::to_string(expected[c]),
-            where(0, i)));
+            at(0, i, c) + ", C(" + number_text(table.mean_at(i)) + ") is " + number_text(expected[c]), where(0, i)));
         return;
       }
   }
@@ -117,8 +117,7 @@ void check_colormap(const Asset& a, std::vector<Finding>& out) {
         if (entry(j, i, c) < lo[c] - tolerance || entry(j, i, c) > hi[c] + tolerance) {
           out.push_back(make_finding(
               msg::colormap_outside_hull,
-              at(j, i, c) + ", C's range is [" + std::to_string(lo[c]) + ", " + std::to_string(hi[c]) + "]",
-              where(j, i)));
+              at(j, i, c) + ", C's range is [" + number_text(lo[c]) + ", " + number_text(hi[c]) + "]", where(j, i)));
           return;
         }
   for (uint32_t j = 1; j < H; ++j)
@@ -127,7 +126,7 @@ void check_colormap(const Asset& a, std::vector<Finding>& out) {
       for (int c = 0; c < 3; ++c)
         if (std::abs(entry(j, i, c) - expected[c]) > tolerance) {
           out.push_back(make_finding(msg::colormap_not_convolution,
-                                     at(j, i, c) + ", the convolution is " + std::to_string(expected[c]), where(j, i)));
+                                     at(j, i, c) + ", the convolution is " + number_text(expected[c]), where(j, i)));
           return;
         }
     }

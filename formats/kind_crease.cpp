@@ -11,6 +11,7 @@
 #include <cmath>
 #include <string>
 
+#include "formats/number_text.h"
 #include "formats/asset.h"
 #include "formats/asset_kind.h"
 #include "formats/crease_field.h"
@@ -39,7 +40,7 @@ void check_crease(const Asset& a, std::vector<Finding>& out) {
   for (const auto& [name, values] : floats)
     for (size_t i = 0; i < values->size(); ++i)
       if (!std::isfinite((*values)[i])) {
-        out.push_back(make_finding(msg::crease_non_finite, "'" + std::string(name) + "' element " + std::to_string(i),
+        out.push_back(make_finding(msg::crease_non_finite, "'" + std::string(name) + "' element " + number_text(i),
                                    {{"section", name}, {"index", i}}));
         return;
       }
@@ -49,7 +50,7 @@ void check_crease(const Asset& a, std::vector<Finding>& out) {
       const float t = (*values)[i];
       if (t != kCreaseNoCrossing && !(t >= kCreaseMinT && t <= 1.0f - kCreaseMinT)) {
         out.push_back(make_finding(msg::crease_bad_crossing,
-                                   "'" + std::string(name) + "' edge " + std::to_string(i) + " is " + std::to_string(t),
+                                   "'" + std::string(name) + "' edge " + number_text(i) + " is " + number_text(t),
                                    {{"section", name}, {"index", i}}));
         return;
       }
@@ -62,18 +63,18 @@ void check_crease(const Asset& a, std::vector<Finding>& out) {
       if (c.mask & ~(kCreaseSegmentBits | kCreaseReversedBits))
         problem = "unknown bits";
       else if (std::popcount(segments) > int(kCreaseMaxSegmentsPerCell))
-        problem = std::to_string(std::popcount(segments)) + " segments";
+        problem = number_text(std::popcount(segments)) + " segments";
       else if ((c.mask >> 8) & ~segments)
         problem = "a direction bit without its segment";
       for (int bit = 0; bit < 6 && problem.empty(); ++bit)
         if ((segments >> bit) & 1u)
           for (int e : {kCreasePairFirst[bit], kCreasePairSecond[bit]})
             if (!c.crossing[e])
-              problem = "segment bit " + std::to_string(bit) + " ends on edge " + std::to_string(e) +
-                        ", which has no crossing";
+              problem =
+                  "segment bit " + number_text(bit) + " ends on edge " + number_text(e) + ", which has no crossing";
       if (!problem.empty()) {
         out.push_back(make_finding(msg::crease_bad_segments,
-                                   "cell (" + std::to_string(i) + ", " + std::to_string(j) + "): " + problem,
+                                   "cell (" + number_text(i) + ", " + number_text(j) + "): " + problem,
                                    {{"section", kCreaseSegmentsSection}, {"cell", {i, j}}}));
         return;
       }
@@ -81,18 +82,18 @@ void check_crease(const Asset& a, std::vector<Finding>& out) {
   for (size_t k = 0; k < f.distance.size(); ++k) {
     const uint32_t i = uint32_t(k % f.samples_x()), j = uint32_t(k / f.samples_x());
     const nlohmann::json at = {{"sample", {i, j}}};
-    const std::string where = "sample (" + std::to_string(i) + ", " + std::to_string(j) + ")";
+    const std::string where = "sample (" + number_text(i) + ", " + number_text(j) + ")";
     if (f.distance[k] < 0.0f) {
-      out.push_back(make_finding(msg::crease_negative_distance, where + ": " + std::to_string(f.distance[k]), at));
+      out.push_back(make_finding(msg::crease_negative_distance, where + ": " + number_text(f.distance[k]), at));
       return;
     }
     const double len = std::hypot(double(f.gradient[2 * k]), double(f.gradient[2 * k + 1]));
     if (std::abs(len - 1.0) > kUnitTolerance) {
-      out.push_back(make_finding(msg::crease_gradient_not_unit, where + ": length " + std::to_string(len), at));
+      out.push_back(make_finding(msg::crease_gradient_not_unit, where + ": length " + number_text(len), at));
       return;
     }
     if (f.side[k] != 1 && f.side[k] != -1) {
-      out.push_back(make_finding(msg::crease_bad_side, where + ": " + std::to_string(int(f.side[k])), at));
+      out.push_back(make_finding(msg::crease_bad_side, where + ": " + number_text(int(f.side[k])), at));
       return;
     }
   }
@@ -101,8 +102,8 @@ void check_crease(const Asset& a, std::vector<Finding>& out) {
     const double len = std::sqrt(x * x + y * y + z * z);
     if (std::abs(len - 1.0) > kUnitTolerance || z < 0.0) {
       out.push_back(make_finding(msg::crease_bad_normal,
-                                 "texel (" + std::to_string(k % w) + ", " + std::to_string(k / w) + "): length " +
-                                     std::to_string(len) + ", z " + std::to_string(z),
+                                 "texel (" + number_text(k % w) + ", " + number_text(k / w) + "): length " +
+                                     number_text(len) + ", z " + number_text(z),
                                  {{"texel", {k % w, k / w}}}));
       return;
     }

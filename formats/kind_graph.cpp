@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "formats/number_text.h"
 #include "formats/asset.h"
 #include "formats/asset_kind.h"
 #include "formats/graph_layout.h"
@@ -32,7 +33,7 @@ void check_graph(const Asset& a, std::vector<Finding>& out) {
        {std::pair{kGraphStacksSection, &stacks}, std::pair{kGraphTransferSection, &transfer}})
     for (size_t i = 0; i < values->size(); ++i)
       if (!std::isfinite((*values)[i])) {
-        out.push_back(make_finding(msg::graph_non_finite, "'" + std::string(name) + "' element " + std::to_string(i),
+        out.push_back(make_finding(msg::graph_non_finite, "'" + std::string(name) + "' element " + number_text(i),
                                    {{"section", name}, {"index", i}}));
         return;
       }
@@ -51,8 +52,8 @@ void check_graph(const Asset& a, std::vector<Finding>& out) {
         for (size_t i = 0; i < dims; ++i) dot += double(bases[(d * dims + i) * P + p]) * bases[(d * dims + i) * P + q];
         if (!(std::abs(dot - (p == q ? 1.0 : 0.0)) <= 1e-4)) {
           out.push_back(make_finding(msg::graph_bad_pca,
-                                     "synthesis level " + std::to_string(d) + ": components " + std::to_string(p) +
-                                         " and " + std::to_string(q) + " have dot product " + std::to_string(dot),
+                                     "synthesis level " + number_text(d) + ": components " + number_text(p) + " and " +
+                                         number_text(q) + " have dot product " + number_text(dot),
                                      {{"depth", d}}));
           return;
         }
@@ -68,20 +69,20 @@ void check_graph(const Asset& a, std::vector<Finding>& out) {
     const auto& allowed = admissible[i][k];
     if (!none && (c[2] >= g.side || c[3] >= g.side ||
                   std::find(allowed.begin(), allowed.end(), StackLevel{c[0], c[1]}) == allowed.end())) {
-      out.push_back(make_finding(
-          msg::graph_bad_candidate,
-          "candidate " + std::to_string(slot % g.candidates) + " of exemplar " + std::to_string(i) + " level " +
-              std::to_string(k) + " texel " + std::to_string(texel % texels) + " is (" + std::to_string(c[0]) + ", " +
-              std::to_string(c[1]) + ", " + std::to_string(c[2]) + ", " + std::to_string(c[3]) + ")",
-          {{"slot", slot}}));
+      out.push_back(make_finding(msg::graph_bad_candidate,
+                                 "candidate " + number_text(slot % g.candidates) + " of exemplar " + number_text(i) +
+                                     " level " + number_text(k) + " texel " + number_text(texel % texels) + " is (" +
+                                     number_text(c[0]) + ", " + number_text(c[1]) + ", " + number_text(c[2]) + ", " +
+                                     number_text(c[3]) + ")",
+                                 {{"slot", slot}}));
       return;
     }
     if (none || (c[0] == i && c[1] >= k))  // a loop (c[1] < k) carries a transfer, libbake/synth/loop_transitions.h
       for (uint32_t ch = 0; ch < g.channels; ++ch)
         if (transfer[slot * g.channels + ch] != 0.0f) {
           out.push_back(make_finding(msg::graph_bad_transfer,
-                                     "candidate slot " + std::to_string(slot) + " channel " + std::to_string(ch) +
-                                         " has offset " + std::to_string(transfer[slot * g.channels + ch]),
+                                     "candidate slot " + number_text(slot) + " channel " + number_text(ch) +
+                                         " has offset " + number_text(transfer[slot * g.channels + ch]),
                                      {{"slot", slot}}));
           return;
         }

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <string>
 
+#include "formats/number_text.h"
 #include "formats/asset.h"
 #include "formats/asset_kind.h"
 #include "formats/lut_layout.h"
@@ -35,8 +36,8 @@ void check_channel(const std::vector<float>& rows, uint32_t channel, std::vector
       if (!(rows[2 * i + col] > rows[2 * (i - 1) + col])) {
         const char* axis = col == 0 ? "x" : "z";
         out.push_back(make_finding(msg::lut_not_monotone,
-                                   name + ": knot " + std::to_string(i) + " has " + axis + " = " +
-                                       number(rows[2 * i + col]) + ", not above knot " + std::to_string(i - 1) + "'s " +
+                                   name + ": knot " + number_text(i) + " has " + axis + " = " +
+                                       number(rows[2 * i + col]) + ", not above knot " + number_text(i - 1) + "'s " +
                                        number(rows[2 * (i - 1) + col]),
                                    {{"section", name}, {"index", i}}));
         return;
@@ -55,7 +56,7 @@ void check_lut(const Asset& a, std::vector<Finding>& out) {
     if (!lut_knot_shape_ok(a.section(std::string(section)).shape, size)) {
       out.push_back(make_finding(msg::lut_section_shape,
                                  "'" + std::string(section) + "' should be f32 [M, 2] with 1 <= M <= " +
-                                     std::to_string(lut_max_knots(size)) + " (3 x size)",
+                                     number_text(lut_max_knots(size)) + " (3 x size)",
                                  {{"section", section}}));
       return;
     }
@@ -66,7 +67,7 @@ void check_lut(const Asset& a, std::vector<Finding>& out) {
     for (size_t i = 0; i < rows.size(); ++i)
       if (!std::isfinite(rows[i])) {
         out.push_back(make_finding(msg::lut_non_finite,
-                                   "'" + name + "' knot " + std::to_string(i / 2) + (i % 2 ? " z" : " x"),
+                                   "'" + name + "' knot " + number_text(i / 2) + (i % 2 ? " z" : " x"),
                                    {{"section", name}, {"index", i / 2}}));
         return;
       }

@@ -4,6 +4,7 @@
 // the finest normals over each texel's rectangle (formats/mip_levels.h). formats/SPEC.md, "Kind 1: mip".
 #include <cmath>
 
+#include "formats/number_text.h"
 #include "formats/asset.h"
 #include "formats/asset_kind.h"
 #include "formats/mip_levels.h"
@@ -12,7 +13,7 @@
 namespace mbk {
 namespace {
 
-std::string level_name(size_t k) { return "level_" + std::to_string(k); }
+std::string level_name(size_t k) { return "level_" + number_text(k); }
 
 // Tolerances: level 0 is renormalised in float (|n| - 1 within a few ulps); coarser levels are means of
 // level 0 accumulated in double and stored in float, so a texel matches the mean recomputed here from the
@@ -38,13 +39,13 @@ void check_mip(const Asset& a, std::vector<Finding>& out) {
       for (uint32_t x = 0; x < sizes[k].width; ++x) {
         const float* n = &L[(size_t(y) * sizes[k].width + x) * 3];
         const double len = std::sqrt(double(n[0]) * n[0] + double(n[1]) * n[1] + double(n[2]) * n[2]);
-        const std::string at = level_name(k) + " texel (" + std::to_string(x) + ", " + std::to_string(y) + ")";
+        const std::string at = level_name(k) + " texel (" + number_text(x) + ", " + number_text(y) + ")";
         if (k == 0 && std::abs(len - 1.0) > kUnitTolerance) {
-          out.push_back(make_finding(msg::mip_level0_not_unit, at + ": length " + std::to_string(len)));
+          out.push_back(make_finding(msg::mip_level0_not_unit, at + ": length " + number_text(len)));
           return;
         }
         if (len > 1.0 + kUnitTolerance) {
-          out.push_back(make_finding(msg::mip_length_exceeds_one, at + ": length " + std::to_string(len)));
+          out.push_back(make_finding(msg::mip_length_exceeds_one, at + ": length " + number_text(len)));
           return;
         }
         if (k == 0) continue;
@@ -52,9 +53,9 @@ void check_mip(const Asset& a, std::vector<Finding>& out) {
         const std::vector<double> mean = level0_mean(finest, W, 3, wx[x], wy[y]);
         for (int c = 0; c < 3; ++c)
           if (std::abs(mean[c] - n[c]) > kMeanTolerance) {
-            out.push_back(make_finding(msg::mip_parent_not_mean, at + ": channel " + std::to_string(c) + " is " +
-                                                                     std::to_string(n[c]) + ", level 0 gives " +
-                                                                     std::to_string(mean[c])));
+            out.push_back(make_finding(msg::mip_parent_not_mean, at + ": channel " + number_text(c) + " is " +
+                                                                     number_text(n[c]) + ", level 0 gives " +
+                                                                     number_text(mean[c])));
             return;
           }
       }

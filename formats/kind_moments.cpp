@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 
+#include "formats/number_text.h"
 #include "formats/asset.h"
 #include "formats/asset_kind.h"
 #include "formats/mip_levels.h"
@@ -46,10 +47,10 @@ void check_moments(const Asset& a, std::vector<Finding>& out) {
   for (size_t i = 0; i < finest.size(); i += 2) {
     const double d = finest[i], square = d * d;
     if (std::abs(double(finest[i + 1]) - square) > kRelative * square + kAbsolute) {
-      out.push_back(make_finding(msg::moments_level0_not_square,
-                                 "level_0 texel " + std::to_string(i / 2) + ": " + std::to_string(finest[i + 1]) +
-                                     " vs " + std::to_string(square),
-                                 {{"section", "level_0"}, {"texel", i / 2}}));
+      out.push_back(make_finding(
+          msg::moments_level0_not_square,
+          "level_0 texel " + number_text(i / 2) + ": " + number_text(finest[i + 1]) + " vs " + number_text(square),
+          {{"section", "level_0"}, {"texel", i / 2}}));
       return;
     }
   }
@@ -59,13 +60,13 @@ void check_moments(const Asset& a, std::vector<Finding>& out) {
     for (uint32_t y = 0; y < sizes[k].height; ++y)
       for (uint32_t x = 0; x < sizes[k].width; ++x) {
         const float* m = &L[(size_t(y) * sizes[k].width + x) * 2];
-        const std::string at = moments_level_name(k) + " texel (" + std::to_string(x) + ", " + std::to_string(y) + ")";
+        const std::string at = moments_level_name(k) + " texel (" + number_text(x) + ", " + number_text(y) + ")";
         const nlohmann::json where = {{"section", moments_level_name(k)}, {"x", x}, {"row", y}};
         const double first_squared = double(m[0]) * m[0];
         if (double(m[1]) < first_squared - (kRelative * (first_squared + m[1]) + kAbsolute)) {
-          out.push_back(make_finding(
-              msg::moments_negative_variance,
-              at + ": E[d^2] " + std::to_string(m[1]) + " < E[d]^2 " + std::to_string(first_squared), where));
+          out.push_back(make_finding(msg::moments_negative_variance,
+                                     at + ": E[d^2] " + number_text(m[1]) + " < E[d]^2 " + number_text(first_squared),
+                                     where));
           return;
         }
         if (k == 0) continue;
@@ -73,8 +74,8 @@ void check_moments(const Asset& a, std::vector<Finding>& out) {
         for (int c = 0; c < 2; ++c)
           if (std::abs(mean[c] - m[c]) > kRelative * scale[c] + kAbsolute) {
             out.push_back(make_finding(msg::moments_parent_not_mean,
-                                       at + ": moment " + std::to_string(c + 1) + " is " + std::to_string(m[c]) +
-                                           ", level 0 gives " + std::to_string(mean[c]),
+                                       at + ": moment " + number_text(c + 1) + " is " + number_text(m[c]) +
+                                           ", level 0 gives " + number_text(mean[c]),
                                        where));
             return;
           }

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <string>
 
+#include "formats/number_text.h"
 #include "formats/asset.h"
 #include "formats/asset_kind.h"
 #include "formats/rmq_layout.h"
@@ -21,7 +22,7 @@ namespace {
 const char* const kComponent[4] = {"min_x", "max_x", "min_y", "max_y"};
 
 std::string at_text(uint32_t level, uint32_t x, uint32_t row) {
-  return "level " + std::to_string(level) + " texel (" + std::to_string(x) + ", " + std::to_string(row) + ")";
+  return "level " + number_text(level) + " texel (" + number_text(x) + ", " + number_text(row) + ")";
 }
 
 // Rows of one level copied into typed buffers (section bytes are not typed memory), so that the counting
@@ -69,9 +70,8 @@ Finding describe_unordered(const RmqLayout& L, LevelRow<Code>& rows, uint64_t co
           if (e[c] > e[c + 1])
             return make_finding(
                 msg::rmq_min_above_max,
-                at_text(k, x, row) + ": " + kComponent[c] + " code " + std::to_string(e[c]) + " > " +
-                    kComponent[c + 1] + " code " + std::to_string(e[c + 1]) + " (" + std::to_string(count) +
-                    " entries)",
+                at_text(k, x, row) + ": " + kComponent[c] + " code " + number_text(e[c]) + " > " + kComponent[c + 1] +
+                    " code " + number_text(e[c + 1]) + " (" + number_text(count) + " entries)",
                 {{"level", k}, {"x", x}, {"row", row}, {"component", c == 0 ? "x" : "y"}, {"entries", count}});
     }
   return {};
@@ -107,9 +107,9 @@ Finding describe_not_nested(const RmqLayout& L, LevelRow<Code>& parents, LevelRo
             const Code parent = p[4 * x + c], child = ch[4 * x + c];
             if (c % 2 == 0 ? parent <= child : parent >= child) continue;
             first = make_finding(msg::rmq_not_nested,
-                                 at_text(k, x, row) + ": " + kComponent[c] + " code " + std::to_string(parent) +
+                                 at_text(k, x, row) + ": " + kComponent[c] + " code " + number_text(parent) +
                                      " does not contain child " + at_text(k - 1, x + dx, row + dy) + "'s " +
-                                     std::to_string(child) + " (" + std::to_string(count) + " parent-child pairs)",
+                                     number_text(child) + " (" + number_text(count) + " parent-child pairs)",
                                  {{"level", k},
                                   {"x", x},
                                   {"row", row},

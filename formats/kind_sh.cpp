@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "formats/number_text.h"
 #include "formats/asset.h"
 #include "formats/asset_kind.h"
 #include "formats/mip_levels.h"
@@ -14,7 +15,7 @@
 namespace mbk {
 namespace {
 
-std::string level_name(size_t k) { return "level_" + std::to_string(k); }
+std::string level_name(size_t k) { return "level_" + number_text(k); }
 
 constexpr double kUnitTolerance = 1e-5;
 constexpr uint32_t kMaxOrder = 256;
@@ -52,26 +53,26 @@ void check_sh(const Asset& a, std::vector<Finding>& out) {
   };
   const SectionInfo* n = a.find("normals");
   if (!n || n->type != ElementType::f32 || n->shape != std::vector<uint64_t>{H, W, 3})
-    return shape_finding("normals", "f32 [" + std::to_string(H) + ", " + std::to_string(W) + ", 3]");
+    return shape_finding("normals", "f32 [" + number_text(H) + ", " + number_text(W) + ", 3]");
   const SectionInfo* win = a.find("window");
   if (!win || win->type != ElementType::f32 || win->shape != std::vector<uint64_t>{order + 1})
-    return shape_finding("window", "f32 [" + std::to_string(order + 1) + "]");
+    return shape_finding("window", "f32 [" + number_text(order + 1) + "]");
   for (size_t k = 1; k < sizes.size(); ++k) {
     const SectionInfo* s = a.find(level_name(k));
     if (!s || s->type != type || s->shape != std::vector<uint64_t>{sizes[k].height, sizes[k].width, count})
-      return shape_finding(level_name(k), precision + " [" + std::to_string(sizes[k].height) + ", " +
-                                              std::to_string(sizes[k].width) + ", " + std::to_string(count) + "]");
+      return shape_finding(level_name(k), precision + " [" + number_text(sizes[k].height) + ", " +
+                                              number_text(sizes[k].width) + ", " + number_text(count) + "]");
   }
   if (a.find(level_name(sizes.size())))
-    return shape_finding(level_name(sizes.size()), "absent: a " + std::to_string(W) + "x" + std::to_string(H) +
-                                                       " image has " + std::to_string(sizes.size()) + " levels");
+    return shape_finding(level_name(sizes.size()), "absent: a " + number_text(W) + "x" + number_text(H) +
+                                                       " image has " + number_text(sizes.size()) + " levels");
   const std::vector<float> normals = a.read<float>("normals"), window = a.read<float>("window");
   std::vector<std::vector<float>> levels(1);
   for (size_t k = 1; k < sizes.size(); ++k) levels.push_back(a.read_as_float(level_name(k)));
   auto non_finite = [&](const std::vector<float>& v, const std::string& name) {
     for (size_t i = 0; i < v.size(); ++i)
       if (!std::isfinite(v[i])) {
-        out.push_back(make_finding(msg::sh_non_finite, name + " element " + std::to_string(i)));
+        out.push_back(make_finding(msg::sh_non_finite, name + " element " + number_text(i)));
         return true;
       }
     return false;
@@ -82,16 +83,14 @@ void check_sh(const Asset& a, std::vector<Finding>& out) {
   for (size_t i = 0; i < window.size(); ++i)
     if ((i == 0 && window[i] != 1.0f) || !(window[i] > 0.0f && window[i] <= 1.0f) ||
         (i > 0 && window[i] > window[i - 1])) {
-      out.push_back(
-          make_finding(msg::sh_bad_window, "window[" + std::to_string(i) + "] = " + std::to_string(window[i])));
+      out.push_back(make_finding(msg::sh_bad_window, "window[" + number_text(i) + "] = " + number_text(window[i])));
       return;
     }
   for (size_t t = 0; t < size_t(W) * H; ++t) {
     const float* v = &normals[3 * t];
     const double len = std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2]);
     if (std::abs(len - 1.0) > kUnitTolerance) {
-      out.push_back(
-          make_finding(msg::sh_normal_not_unit, "normal " + std::to_string(t) + ": length " + std::to_string(len)));
+      out.push_back(make_finding(msg::sh_normal_not_unit, "normal " + number_text(t) + ": length " + number_text(len)));
       return;
     }
   }
@@ -103,9 +102,9 @@ void check_sh(const Asset& a, std::vector<Finding>& out) {
     for (uint32_t y = 0; y < h; ++y)
       for (uint32_t x = 0; x < w; ++x) {
         const float* c = &g[(size_t(y) * w + x) * count];
-        const std::string at = level_name(k) + " texel (" + std::to_string(x) + ", " + std::to_string(y) + ")";
+        const std::string at = level_name(k) + " texel (" + number_text(x) + ", " + number_text(y) + ")";
         if (std::abs(c[0] - y00) > tol.at(y00)) {
-          out.push_back(make_finding(msg::sh_dc_wrong, at + ": g_00 = " + std::to_string(c[0])));
+          out.push_back(make_finding(msg::sh_dc_wrong, at + ": g_00 = " + number_text(c[0])));
           return;
         }
         for (uint32_t l = 0; l <= order; ++l)
@@ -113,9 +112,8 @@ void check_sh(const Asset& a, std::vector<Finding>& out) {
             const double bound = std::sqrt((2.0 * l + 1.0) / ((m == 0 ? 4.0 : 2.0) * std::numbers::pi));
             const float v = c[l * (l + 1) + uint32_t(m + int(l)) - l];
             if (std::abs(v) > bound + tol.at(bound)) {
-              out.push_back(
-                  make_finding(msg::sh_coefficient_out_of_bounds,
-                               at + ": g_" + std::to_string(l) + "," + std::to_string(m) + " = " + std::to_string(v)));
+              out.push_back(make_finding(msg::sh_coefficient_out_of_bounds,
+                                         at + ": g_" + number_text(l) + "," + number_text(m) + " = " + number_text(v)));
               return;
             }
           }
@@ -128,9 +126,9 @@ void check_sh(const Asset& a, std::vector<Finding>& out) {
         const double expected[3] = {c1 * mean[1], c1 * mean[2], c1 * mean[0]};  // (Y1-1, Y10, Y11) ~ (y, z, x)
         for (int i = 0; i < 3; ++i)
           if (std::abs(c[1 + i] - expected[i]) > tol.at(c1)) {
-            out.push_back(make_finding(msg::sh_band1_not_mean_normal, at + ": g_1," + std::to_string(i - 1) + " = " +
-                                                                          std::to_string(c[1 + i]) + ", normals give " +
-                                                                          std::to_string(expected[i])));
+            out.push_back(make_finding(msg::sh_band1_not_mean_normal, at + ": g_1," + number_text(i - 1) + " = " +
+                                                                          number_text(c[1 + i]) + ", normals give " +
+                                                                          number_text(expected[i])));
             return;
           }
       }

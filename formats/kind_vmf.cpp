@@ -6,6 +6,7 @@
 // the finest normals (read back from level 0).
 #include <cmath>
 
+#include "formats/number_text.h"
 #include "formats/asset.h"
 #include "formats/asset_kind.h"
 #include "formats/mip_levels.h"
@@ -38,37 +39,37 @@ void check_vmf(const Asset& a, std::vector<Finding>& out) {
   }
   std::vector<std::vector<float>> levels, features;
   for (size_t k = 0; k < sizes.size(); ++k) {
-    const std::string name = "level_" + std::to_string(k), fname = "features_" + std::to_string(k);
+    const std::string name = "level_" + number_text(k), fname = "features_" + number_text(k);
     const std::vector<uint64_t> shape = {sizes[k].height, sizes[k].width, J, 4};
     const SectionInfo* s = a.find(name);
     if (!s || s->type != ElementType::f32 || s->shape != shape) {
-      out.push_back(make_finding(msg::vmf_section_shape, "'" + name + "' should be f32 [" + std::to_string(shape[0]) +
-                                                             ", " + std::to_string(shape[1]) + ", " +
-                                                             std::to_string(J) + ", 4]"));
+      out.push_back(make_finding(msg::vmf_section_shape, "'" + name + "' should be f32 [" + number_text(shape[0]) +
+                                                             ", " + number_text(shape[1]) + ", " + number_text(J) +
+                                                             ", 4]"));
       return;
     }
     const SectionInfo* f = a.find(fname);
     if (F ? (!f || f->type != ElementType::f32 || f->shape != std::vector<uint64_t>{shape[0], shape[1], J, F})
           : f != nullptr) {
-      out.push_back(make_finding(msg::vmf_section_shape,
-                                 "'" + fname + "' should be " +
-                                     (F ? "f32 [h, w, " + std::to_string(J) + ", " + std::to_string(F) + "]"
-                                        : std::string("absent (feature_channels = 0)"))));
+      out.push_back(
+          make_finding(msg::vmf_section_shape, "'" + fname + "' should be " +
+                                                   (F ? "f32 [h, w, " + number_text(J) + ", " + number_text(F) + "]"
+                                                      : std::string("absent (feature_channels = 0)"))));
       return;
     }
     levels.push_back(a.read<float>(name));
     if (F) features.push_back(a.read<float>(fname));
   }
-  if (a.find("level_" + std::to_string(sizes.size()))) {
+  if (a.find("level_" + number_text(sizes.size()))) {
     out.push_back(make_finding(msg::vmf_section_shape, "more levels than the image has"));
     return;
   }
   for (size_t k = 0; k < levels.size(); ++k) {
     for (float v : levels[k])
-      if (!std::isfinite(v)) return out.push_back(make_finding(msg::vmf_non_finite, "level_" + std::to_string(k)));
+      if (!std::isfinite(v)) return out.push_back(make_finding(msg::vmf_non_finite, "level_" + number_text(k)));
     if (F)
       for (float v : features[k])
-        if (!std::isfinite(v)) return out.push_back(make_finding(msg::vmf_non_finite, "features_" + std::to_string(k)));
+        if (!std::isfinite(v)) return out.push_back(make_finding(msg::vmf_non_finite, "features_" + number_text(k)));
   }
   const uint32_t W = sizes[0].width, H = sizes[0].height;
   for (size_t k = 0; k < levels.size(); ++k) {
@@ -78,8 +79,7 @@ void check_vmf(const Asset& a, std::vector<Finding>& out) {
       for (uint32_t x = 0; x < w; ++x) {
         const size_t texel = size_t(y) * w + x;
         const float* lobes = &levels[k][texel * J * 4];
-        const std::string at =
-            "level_" + std::to_string(k) + " texel (" + std::to_string(x) + ", " + std::to_string(y) + ")";
+        const std::string at = "level_" + number_text(k) + " texel (" + number_text(x) + ", " + number_text(y) + ")";
         double sum = 0.0, moment[3] = {0, 0, 0};
         int live = 0;
         for (uint64_t j = 0; j < J; ++j) {
@@ -87,29 +87,28 @@ void check_vmf(const Asset& a, std::vector<Finding>& out) {
           const double length = std::sqrt(double(l[1]) * l[1] + double(l[2]) * l[2] + double(l[3]) * l[3]);
           if (l[0] < 0.0f)
             return out.push_back(make_finding(msg::vmf_amplitudes_not_normalised,
-                                              at + ": lobe " + std::to_string(j) + " alpha " + std::to_string(l[0])));
+                                              at + ": lobe " + number_text(j) + " alpha " + number_text(l[0])));
           bool features_zero = true;
           for (uint64_t f = 0; F && f < F; ++f)
             features_zero = features_zero && features[k][(texel * J + j) * F + f] == 0.0f;
           if (l[0] == 0.0f && (length != 0.0 || !features_zero))
-            return out.push_back(make_finding(msg::vmf_empty_lobe_not_zero, at + ": lobe " + std::to_string(j)));
+            return out.push_back(make_finding(msg::vmf_empty_lobe_not_zero, at + ": lobe " + number_text(j)));
           if (length > l[0] * (1.0 + kLengthTolerance))
-            return out.push_back(make_finding(msg::vmf_mean_too_long, at + ": lobe " + std::to_string(j) +
-                                                                          " |alpha r| " + std::to_string(length) +
-                                                                          ", alpha " + std::to_string(l[0])));
+            return out.push_back(make_finding(msg::vmf_mean_too_long, at + ": lobe " + number_text(j) + " |alpha r| " +
+                                                                          number_text(length) + ", alpha " +
+                                                                          number_text(l[0])));
           sum += l[0];
           live += l[0] > 0.0f;
           for (int c = 0; c < 3; ++c) moment[c] += l[1 + c];
           if (k == 0 && l[0] > 0.0f && (std::abs(l[0] - 1.0) > 1e-6 || std::abs(length - 1.0) > kLengthTolerance))
-            return out.push_back(make_finding(msg::vmf_finest_not_single_lobe, at + ": lobe " + std::to_string(j) +
-                                                                                   " alpha " + std::to_string(l[0]) +
-                                                                                   ", |r| " + std::to_string(length)));
+            return out.push_back(make_finding(
+                msg::vmf_finest_not_single_lobe,
+                at + ": lobe " + number_text(j) + " alpha " + number_text(l[0]) + ", |r| " + number_text(length)));
         }
         if (k == 0 && live != 1)
-          return out.push_back(
-              make_finding(msg::vmf_finest_not_single_lobe, at + ": " + std::to_string(live) + " lobes"));
+          return out.push_back(make_finding(msg::vmf_finest_not_single_lobe, at + ": " + number_text(live) + " lobes"));
         if (std::abs(sum - 1.0) > kSumTolerance)
-          return out.push_back(make_finding(msg::vmf_amplitudes_not_normalised, at + ": sum " + std::to_string(sum)));
+          return out.push_back(make_finding(msg::vmf_amplitudes_not_normalised, at + ": sum " + number_text(sum)));
         if (k == 0 || align != 0.0) continue;
         double mean[3] = {0, 0, 0};  // the MIP mean of the finest normals, read from level 0 (alpha 1, r = n)
         for (const MipWeight& fy : wy[y])
@@ -120,10 +119,9 @@ void check_vmf(const Asset& a, std::vector<Finding>& out) {
           }
         for (int c = 0; c < 3; ++c)
           if (std::abs(moment[c] - mean[c]) > kMomentTolerance)
-            return out.push_back(make_finding(msg::vmf_moment_not_mean_normal, at + ": component " + std::to_string(c) +
-                                                                                   " " + std::to_string(moment[c]) +
-                                                                                   ", normals give " +
-                                                                                   std::to_string(mean[c])));
+            return out.push_back(make_finding(msg::vmf_moment_not_mean_normal,
+                                              at + ": component " + number_text(c) + " " + number_text(moment[c]) +
+                                                  ", normals give " + number_text(mean[c])));
       }
   }
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "formats/asset.h"
+#include "formats/number_text.h"
 
 namespace mbk {
 
@@ -63,8 +64,7 @@ std::string read_rmq_range(const Asset& asset, std::array<RmqRange, 2>& range) {
     const char* name = c == 0 ? "n_x" : "n_y";
     if (!std::isfinite(range[c].lo) || !std::isfinite(range[c].hi)) return std::string(name) + " range is not finite";
     if (range[c].lo > range[c].hi)
-      return std::string(name) + " range has lo " + std::to_string(range[c].lo) + " > hi " +
-             std::to_string(range[c].hi);
+      return std::string(name) + " range has lo " + number_text(range[c].lo) + " > hi " + number_text(range[c].hi);
     if (!std::isfinite(range[c].hi - range[c].lo)) return std::string(name) + " range is too wide for a double";
   }
   return {};

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "formats/error.h"
+#include "formats/number_text.h"
 
 namespace mbk {
 
@@ -21,8 +22,8 @@ uint32_t rmq_quantize_down(double v, const RmqRange& range, uint32_t bits) { ret
 
 uint32_t RmqQuantizer::up_by_search(double v) const {
   if (!(v >= range_.lo && v <= range_.hi))
-    throw Error(ExitCode::runtime_failure, "internal: rmq value " + std::to_string(v) + " outside its range [" +
-                                               std::to_string(range_.lo) + ", " + std::to_string(range_.hi) + "]");
+    throw Error(ExitCode::runtime_failure, "internal: rmq value " + number_text(v) + " outside its range [" +
+                                               number_text(range_.lo) + ", " + number_text(range_.hi) + "]");
   // Ranges so narrow that consecutive codes share a value, or an off guess: the smallest q with value(q) >= v;
   // value(q_max) = hi >= v, so it exists.
   uint32_t lo = 0, hi = q_max_;

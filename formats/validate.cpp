@@ -11,9 +11,18 @@ std::vector<Finding> validate_asset(std::span<const uint8_t> bytes) {
   if (!parsed) return findings;
   check_sections(*parsed, bytes, findings);
   if (has_errors(findings)) return findings;
-  Asset asset = Asset::parse(std::vector<uint8_t>(bytes.begin(), bytes.end()), "");
-  if (asset.kind().check_invariants) asset.kind().check_invariants(asset, findings);
+  const Asset asset = Asset::parse_structure(std::vector<uint8_t>(bytes.begin(), bytes.end()), "");
+  check_kind_invariants(asset, findings);
   return findings;
+}
+
+void check_kind_invariants(const Asset& asset, std::vector<Finding>& findings) {
+  if (!asset.kind().check_invariants) return;
+  try {
+    asset.kind().check_invariants(asset, findings);
+  } catch (const nlohmann::json::exception& e) {  // a checker read a metadata value whose type it did not test
+    findings.push_back(make_finding(msg::metadata_wrong_type, e.what()));
+  }
 }
 
 bool has_errors(const std::vector<Finding>& findings, bool warnings_as_errors) {

@@ -11,7 +11,14 @@
 
 namespace mbk {
 
+class Asset;
+
 std::vector<Finding> validate_asset(std::span<const uint8_t> bytes);
+// Appends the findings of the kind's invariants on an asset whose structure and checksums are sound (validate and
+// every reader run them). A metadata value of a JSON type the checks did not expect is a finding (2014), never an
+// exception.
+void check_kind_invariants(const Asset& asset, std::vector<Finding>& findings);
+
 bool has_errors(const std::vector<Finding>& findings, bool warnings_as_errors = false);
 
 // The first finding that makes an asset invalid (an error, or any finding under `warnings_as_errors`), or null.

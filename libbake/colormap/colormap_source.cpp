@@ -28,10 +28,11 @@ nlohmann::json file_record(const std::filesystem::path& path) {
 LoadedColormap load_gradient_image(const std::filesystem::path& path, ColorEncoding encoding) {
   const std::string where = path.string();
   const ImageHeader header = read_image_header(path);
-  if (header.width > kColormapMaxKnots)
+  if (header.width > kColormapMaxKnots || header.height > kMaxNormalMapSide)
     throw Error(ExitCode::invalid_input,
-                "gradient image is " + std::to_string(header.width) + " texels wide; at most " +
-                    std::to_string(kColormapMaxKnots),
+                "gradient image is " + std::to_string(header.width) + "x" + std::to_string(header.height) +
+                    " texels; at most " + std::to_string(kColormapMaxKnots) + " wide and " +
+                    std::to_string(kMaxNormalMapSide) + " high",
                 where);
   ImageFileInfo info;
   const Image image = load_image(path, &info);
@@ -79,6 +80,11 @@ LoadedColormap load_stops(const std::filesystem::path& path, ColorEncoding encod
     const nlohmann::json& stops = root.required("stops");
     if (!stops.is_array() || stops.size() < 2)
       throw Error(ExitCode::invalid_input, "'stops' must be an array of at least two stops", "stops");
+    if (stops.size() > kMaxColormapStops)
+      throw Error(ExitCode::invalid_input,
+                  std::to_string(stops.size()) + " stops; at most " + std::to_string(kMaxColormapStops) +
+                      " (baking costs time in proportion to them: use a gradient image for finer maps)",
+                  "stops");
     for (size_t k = 0; k < stops.size(); ++k) {
       const std::string at = json_index_path("stops", k);
       JsonObjectReader stop(stops[k], at);

@@ -13,7 +13,8 @@
 // [r, g, b] or grey}, ...]}: at least two stops, positions non-decreasing, the first below the last, at most
 // two stops at one position (a hard edge: C jumps there). "encoding" defaults to "srgb" (colours in [0, 1]
 // as a colour picker shows them); "linear" colours may be any value in [0, 65504]. The driver domain is
-// [first stop, last stop]. Unknown keys are errors naming their path.
+// [first stop, last stop]. Unknown keys are errors naming their path. At most kMaxColormapStops stops (checked
+// before any is read).
 #pragma once
 
 #include <filesystem>
@@ -24,6 +25,8 @@
 #include "formats/colormap_layout.h"
 
 namespace mbk {
+
+inline constexpr size_t kMaxColormapStops = 1024;
 
 enum class ColorEncoding { automatic, srgb, linear };
 // "auto", "srgb", "linear"; Error(bad_command_line) otherwise.

@@ -32,6 +32,9 @@
 
 namespace mbk {
 
+// How deep SVG elements may nest (checked while reading, so that a hostile file fails fast).
+inline constexpr size_t kMaxSvgNesting = 256;
+
 struct CurvePolyline {
   std::vector<Vec2> points;  // texel coordinates; consecutive points differ
   bool closed = false;       // a segment joins the last point to the first

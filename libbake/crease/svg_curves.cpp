@@ -2,6 +2,7 @@
 // entity or namespace processing: neither occurs in the attributes we read) and the path-data grammar of
 // SVG 1.1 Sec. 8.3 for the line commands M L H V Z (absolute and relative). Anything that would draw
 // something we cannot represent is an error naming the element and its line, never silently dropped.
+#include <algorithm>
 #include <charconv>
 #include <cstring>
 #include <cmath>
@@ -155,6 +156,8 @@ class SvgReader {
         }
       }
       if (!e.self_closing) {
+        if (stack.size() >= kMaxSvgNesting)
+          fail(e, "elements nested more than " + std::to_string(kMaxSvgNesting) + " deep");
         stack.push_back(e.name);
         if (skipped) ++skip_depth;
       }
@@ -168,10 +171,14 @@ class SvgReader {
  private:
   bool starts_with(const char* prefix) const { return text_.compare(pos_, std::strlen(prefix), prefix) == 0; }
 
+  // Lines are counted from the last offset asked about (the reader only moves forward), so that numbering every
+  // element stays linear in the file's size.
   size_t line_at(size_t offset) const {
-    size_t line = 1;
-    for (size_t i = 0; i < offset && i < text_.size(); ++i) line += text_[i] == '\n';
-    return line;
+    offset = std::min(offset, text_.size());
+    if (offset < line_offset_) line_offset_ = 0, line_ = 1;
+    line_ += size_t(std::count(text_.begin() + ptrdiff_t(line_offset_), text_.begin() + ptrdiff_t(offset), '\n'));
+    line_offset_ = offset;
+    return line_;
   }
 
   [[noreturn]] void fail_syntax(const std::string& what) const {
@@ -375,6 +382,7 @@ class SvgReader {
   std::string file_;
   uint32_t width_, height_;
   size_t pos_ = 0;
+  mutable size_t line_offset_ = 0, line_ = 1;  // line_at's cache: the line number at line_offset_
   Vec2 origin_ = Vec2::Zero(), scale_ = Vec2::Ones();
   CurveSet set_;
 };

@@ -1,6 +1,7 @@
 // Image reading and writing through OpenImageIO (see image_io.h): the only file that talks to OIIO.
 #include "libbake/image/image_io.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <unistd.h>
 
@@ -10,6 +11,7 @@
 #include <fstream>
 #include <mutex>
 
+#include "formats/atomic_file.h"
 #include "formats/error.h"
 #include "formats/file_extension.h"
 
@@ -200,8 +202,14 @@ void save_image(const std::filesystem::path& path, const Image& image, const Ima
   // OpenImageIO stamps the current time into EXR (capDate) and TIFF files unless DateTime is given; an empty
   // one keeps outputs byte-identical between runs (test: ImageIo.SameImageGivesByteIdenticalFiles).
   spec.attribute("DateTime", "");
+  // The codec writes into memory when it can, and the bytes reach the file through write_file_bytes, which checks
+  // every write: codecs writing to a FILE* of their own do not all notice a full disk (libpng's did not, and a
+  // truncated PNG replaced the old output). Codecs without memory output write the file and are read back whole.
+  OIIO::Filesystem::IOVecOutput encoded;
+  const bool in_memory = out->supports("ioproxy");
+  if (in_memory) out->set_ioproxy(&encoded);
   if (!out->open(path.string(), spec))
-    throw Error(ExitCode::io_failure, "cannot write image: " + one_line(out->geterror()), path.string());
+    throw Error(ExitCode::io_failure, "cannot write image: " + one_line(out->geterror()), named.string());
   bool ok;
   if (exr) {
     ok = out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
@@ -213,7 +221,17 @@ void save_image(const std::filesystem::path& path, const Image& image, const Ima
     ok = out->write_image(OIIO::TypeDesc::UINT8, codes.data());
   }
   ok = out->close() && ok;
-  if (!ok) throw Error(ExitCode::io_failure, "cannot write image: " + one_line(out->geterror()), path.string());
+  if (!ok) throw Error(ExitCode::io_failure, "cannot write image: " + one_line(out->geterror()), named.string());
+  if (in_memory) {
+    write_file_bytes(path, encoded.buffer(), named.string());
+  } else {
+    try {
+      (void)load_image(path);
+    } catch (const Error& e) {
+      throw Error(ExitCode::io_failure, std::string("image written incompletely (disk full?): ") + e.what(),
+                  named.string());
+    }
+  }
 }
 
 ImageHeader read_image_header_within(const std::filesystem::path& path, uint32_t max_side, const std::string& what) {

@@ -51,7 +51,8 @@ struct ImageSaveOptions {
   int float_bits = 32;  // 16 or 32 for EXR
 };
 
-// Writes directly to `path` (callers make it atomic with cli's OutputOption / formats' AtomicFile).
+// Writes to `path` (callers make it atomic with cli's OutputOption / formats' AtomicFile), reporting a full disk or
+// a file-size limit as io_failure: the file is complete when save_image returns, never silently short.
 // The format comes from the extension of `format_path` when given (for temporary files), else of `path`.
 // Throws Error: io_failure when it cannot write, bad_command_line for an unknown extension.
 void save_image(const std::filesystem::path& path, const Image& image, const ImageSaveOptions& options = {},

@@ -2,9 +2,9 @@
 #include "libbake/scene/json_fields.h"
 
 #include <cmath>
-#include <sstream>
 
 #include "formats/error.h"
+#include "formats/number_text.h"
 
 namespace mbk {
 namespace {
@@ -21,29 +21,28 @@ std::string found_text(const nlohmann::json& v) {
   return std::string(v.type_name()) + " " + text;
 }
 
-std::string number_text(double x) {
-  std::ostringstream s;
-  s << x;
-  return s.str();
-}
-
 }  // namespace
 
 nlohmann::json parse_json_strict(std::string_view text, const std::string& file) {
+  if (text.size() > kMaxJsonBytes)
+    throw Error(ExitCode::invalid_input,
+                "JSON file of " + std::to_string(text.size()) + " bytes; at most " + std::to_string(kMaxJsonBytes) +
+                    " are read",
+                file);
   using Event = nlohmann::json::parse_event_t;
-  // The open objects and arrays: their JSON paths, the keys seen so far, and where the parser is in each.
+  // The open objects and arrays and where the parser is in each. Paths are built only for an error message, so
+  // that parsing stays linear in the depth of nesting.
   struct Open {
     bool object;
-    std::string path;
     std::set<std::string> keys;
     std::string key;   // objects: the key of the current member
     size_t index = 0;  // arrays: the index of the current element
   };
   std::vector<Open> open;
   auto current_path = [&]() -> std::string {
-    if (open.empty()) return "";
-    const Open& o = open.back();
-    return o.object ? json_child_path(o.path, o.key) : json_index_path(o.path, o.index);
+    std::string path;
+    for (const Open& o : open) path = o.object ? json_child_path(path, o.key) : json_index_path(path, o.index);
+    return path;
   };
   auto element_done = [&] {
     if (!open.empty() && !open.back().object) ++open.back().index;
@@ -52,7 +51,11 @@ nlohmann::json parse_json_strict(std::string_view text, const std::string& file)
     switch (event) {
       case Event::object_start:
       case Event::array_start:
-        open.push_back({event == Event::object_start, current_path(), {}, {}, 0});
+        if (open.size() >= kMaxJsonDepth)
+          throw Error(ExitCode::invalid_input,
+                      "objects and arrays nested more than " + std::to_string(kMaxJsonDepth) + " deep",
+                      file + ": " + current_path());
+        open.push_back({event == Event::object_start, {}, {}, 0});
         break;
       case Event::key:
         open.back().key = parsed.get<std::string>();

@@ -17,8 +17,14 @@
 
 namespace mbk {
 
+// Limits of every JSON input (checked before and while parsing, so that hostile files fail fast): the size of the
+// text, and how deep objects and arrays may nest (microbake's formats nest at most 5 deep).
+inline constexpr size_t kMaxJsonBytes = size_t(16) << 20;
+inline constexpr size_t kMaxJsonDepth = 64;
+
 // Parses a JSON document from `file`. Error(invalid_input) "malformed JSON: ..." at `file`, or
-// "duplicate key 'k'" at "<file>: <JSON path of the second k>" (e.g. "scene.json: materials.brick.roughness").
+// "duplicate key 'k'", or a limit above exceeded, at "<file>: <JSON path of the second k>" (e.g. "scene.json:
+// materials.brick.roughness").
 nlohmann::json parse_json_strict(std::string_view text, const std::string& file);
 
 // "a.b" + "c" -> "a.b.c"; "" + "c" -> "c".

@@ -304,22 +304,24 @@ class Synthesizer {
 Image synthesize_window(const GraphTables& graph, const SynthesisOptions& options, Progress& progress,
                         SynthesisStatistics* statistics) {
   if (options.width == 0 || options.height == 0)
-    throw Error(ExitCode::bad_command_line, "the window must have a positive width and height");
+    throw Error(ExitCode::bad_command_line, "the window must have a positive width and height", "--window");
   // ~100 bytes per pixel of the padded finest region (pointers, offsets, a copy per sub-pass): 2^24 pixels (a
   // 4096 x 4096 window) stays under 2 GB; larger images are tiles, which are exact.
   if (uint64_t(options.width) * options.height > (uint64_t(1) << 24))
     throw Error(ExitCode::bad_command_line,
-                "the window may hold at most 2^24 pixels (4096 x 4096): synthesize it as tiles");
+                "the window may hold at most 2^24 pixels (4096 x 4096): synthesize it as tiles", "--window");
   constexpr int64_t kMaxCoordinate = int64_t(1) << 62;  // regions grow by padding and halve: no overflow below this
   if (options.x < -kMaxCoordinate || options.y < -kMaxCoordinate || options.x > kMaxCoordinate - options.width ||
       options.y > kMaxCoordinate - options.height)
-    throw Error(ExitCode::bad_command_line, "the window must lie within +-2^62 pixels");
+    throw Error(ExitCode::bad_command_line, "the window must lie within +-2^62 pixels", "--window");
   if (options.level > kMaxLevel)
-    throw Error(ExitCode::bad_command_line, "--level must be at most " + std::to_string(kMaxLevel));
-  if (options.jitter.empty()) throw Error(ExitCode::bad_command_line, "--jitter needs at least one value");
+    throw Error(ExitCode::bad_command_line, "--level must be at most " + std::to_string(kMaxLevel), "--level");
+  if (options.jitter.empty()) throw Error(ExitCode::bad_command_line, "--jitter needs at least one value", "--jitter");
   for (double r : options.jitter)
-    if (!(r >= 0.0 && r <= 1.0)) throw Error(ExitCode::bad_command_line, "--jitter values must be in [0, 1]");
-  if (options.passes == 0 || options.passes > 8) throw Error(ExitCode::bad_command_line, "--passes must be 1..8");
+    if (!(r >= 0.0 && r <= 1.0))
+      throw Error(ExitCode::bad_command_line, "--jitter values must be in [0, 1]", "--jitter");
+  if (options.passes == 0 || options.passes > 8)
+    throw Error(ExitCode::bad_command_line, "--passes must be 1..8", "--passes");
   return Synthesizer(graph, options).run(progress, statistics);
 }
 

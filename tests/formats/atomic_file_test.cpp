@@ -1,6 +1,8 @@
 // Outputs appear only when complete: a temporary beside the destination, renamed on commit, removed when
 // abandoned; failures are io_failure errors and leave nothing behind.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -76,6 +78,34 @@ TEST_F(AtomicFileTest, WriterOutputReadsBack) {
   test::mip_writer(4, 4).write(dir_ / "a.mbk");
   EXPECT_EQ(read_file_bytes(dir_ / "a.mbk"), test::valid_mip_bytes(4, 4));
   EXPECT_EQ(entries(), 1u);
+}
+
+// A pid that no process has: a child that has exited and been reaped.
+pid_t dead_pid() {
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  return child;
+}
+
+TEST_F(AtomicFileTest, StaleTemporaryOfADeadProcessIsRemovedByTheNextWriter) {
+  const std::string dead = std::to_string(dead_pid()), alive = std::to_string(::getppid());
+  const fs::path stale = dir_ / (".out.partial-" + dead + "-0.png");
+  const fs::path live = dir_ / (".out.partial-" + alive + "-3.png");          // a writer that is still running
+  const fs::path other = dir_ / (".other.partial-" + dead + "-0.png");        // another destination's
+  const fs::path lookalike = dir_ / (".out.partial-" + dead + "-0.png.bak");  // not a temporary name
+  for (const fs::path& p : {stale, live, other, lookalike}) std::ofstream(p) << "partial";
+  {
+    AtomicFile f(dir_ / "out.png");
+    f.write_all(std::vector<uint8_t>{1});
+    f.commit();
+  }
+  EXPECT_FALSE(fs::exists(stale));
+  EXPECT_TRUE(fs::exists(live));
+  EXPECT_TRUE(fs::exists(other));
+  EXPECT_TRUE(fs::exists(lookalike));
+  EXPECT_TRUE(fs::exists(dir_ / "out.png"));
 }
 
 }  // namespace

@@ -73,7 +73,8 @@ TEST(ContainerRoundTrip, MetadataPreservedWithProducerAndKind) {
   meta["parameters"]["big"] = 18446744073709551615ull;
   AssetWriter w("mip", meta);
   w.add<float>("level_0", {2, 2, 3}, test::unit_normals(2, 2));
-  Asset a = Asset::parse(w.serialize(), "memory");
+  // The container alone: this two-level mip has one level, which the kind's invariants (Asset::parse) refuse.
+  Asset a = Asset::parse_structure(w.serialize(), "memory");
   EXPECT_EQ(a.metadata()["kind"], "mip");
   EXPECT_EQ(a.metadata()["producer"]["name"], "microbake");
   EXPECT_EQ(a.metadata()["statistics"]["note"], "ünïcode ✓");
