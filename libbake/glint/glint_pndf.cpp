@@ -91,8 +91,8 @@ bool GlintPndf::outside(const RmqBounds& b, const Vec2& s, double sigma) const {
   return s.x() < b.min_x - m || s.x() > b.max_x + m || s.y() < b.min_y - m || s.y() > b.max_y + m;
 }
 
-double GlintPndf::element_term(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Vec2& s) const {
-  const double sigma = normal_sigma(footprint);
+double GlintPndf::element_term(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Vec2& s,
+                               double sigma) const {
   if (outside(range_->element_bounds(t0, t1), s, sigma)) return 0.0;
   double sum = 0.0;
   for (int a1 = 0; a1 < kK; ++a1)
@@ -100,36 +100,6 @@ double GlintPndf::element_term(int64_t t0, int64_t t1, const GlintFootprint& foo
       sum += element_footprint_integral(sub_element(range_->point(), t0, t1, a0, a1), footprint, sigma, s);
   return sum;
 }
-
-double GlintPndf::normalizer(const GlintFootprint& footprint, const TexelRange& t) const {
-  double sx = 0.0, sy = 0.0;
-  for (const double w : axis_weights(t.t0_lo, t.t0_hi, footprint.center.x(), footprint.sigma)) sx += w;
-  for (const double w : axis_weights(t.t1_lo, t.t1_hi, footprint.center.y(), footprint.sigma)) sy += w;
-  // element_footprint_mass at the footprint's centre is the masses' common factor.
-  return element_footprint_mass(footprint.center, kGlintSubElementSigmaTexels, footprint, normal_sigma(footprint)) *
-         sx * sy;
-}
-
-double GlintPndf::evaluate_brute_force(const GlintFootprint& footprint, const Vec2& s) const {
-  const TexelRange t = footprint_texels(footprint);
-  if (t.empty()) return 0.0;
-  double sum = 0.0;
-  for (int64_t t1 = t.t1_lo; t1 <= t.t1_hi; ++t1)
-    for (int64_t t0 = t.t0_lo; t0 <= t.t0_hi; ++t0) sum += element_term(t0, t1, footprint, s);
-  return sum / normalizer(footprint, t);
-}
-
-struct GlintPndf::Query {
-  const GlintFootprint& footprint;
-  Vec2 s;
-  double sigma;
-  TexelRange texels;
-  bool aggregate;
-  // Running sums of the sub-element axis weights (axis_weights), K per texel, from the footprint's first texel;
-  // filled only when aggregating.
-  std::vector<double> prefix_x, prefix_y;
-  double common = 0.0;  // element_footprint_mass at the footprint's centre: the masses' common factor
-};
 
 namespace {
 
@@ -139,13 +109,45 @@ std::vector<double> running_sums(const std::vector<double>& w) {
   return out;
 }
 
+// The sub-element masses of a footprint's texels: common * wx_i * wy_j (separable), kept as running sums of the
+// axis factors so that any rectangle's mass is two differences; total() is the P-NDF's normalizer.
+struct FootprintMasses {
+  std::vector<double> prefix_x, prefix_y;  // K per texel, from the footprint's first texel
+  double common = 0.0;                     // element_footprint_mass at the footprint's centre
+
+  FootprintMasses(const GlintFootprint& footprint, const TexelRange& t, double sigma)
+      : prefix_x(running_sums(axis_weights(t.t0_lo, t.t0_hi, footprint.center.x(), footprint.sigma))),
+        prefix_y(running_sums(axis_weights(t.t1_lo, t.t1_hi, footprint.center.y(), footprint.sigma))),
+        common(element_footprint_mass(footprint.center, kGlintSubElementSigmaTexels, footprint, sigma)) {}
+  double total() const { return common * prefix_x.back() * prefix_y.back(); }
+};
+
 }  // namespace
+
+double GlintPndf::evaluate_brute_force(const GlintFootprint& footprint, const Vec2& s) const {
+  const TexelRange t = footprint_texels(footprint);
+  if (t.empty()) return 0.0;
+  const double sigma = normal_sigma(footprint);
+  double sum = 0.0;
+  for (int64_t t1 = t.t1_lo; t1 <= t.t1_hi; ++t1)
+    for (int64_t t0 = t.t0_lo; t0 <= t.t0_hi; ++t0) sum += element_term(t0, t1, footprint, s, sigma);
+  return sum / FootprintMasses(footprint, t, sigma).total();
+}
+
+struct GlintPndf::Query {
+  const GlintFootprint& footprint;
+  Vec2 s;
+  double sigma;
+  TexelRange texels;
+  bool aggregate;
+  FootprintMasses masses;
+};
 
 double GlintPndf::traverse(const TargetNode& node, const Query& q, PndfStatistics& stats) const {
   ++stats.nodes_visited;
   const int64_t h = range_->target_side();
   if (node.width == 1 && node.height == 1) {
-    const double v = element_term(node.patch_i * h + node.x0, node.patch_j * h + node.y0, q.footprint, q.s);
+    const double v = element_term(node.patch_i * h + node.x0, node.patch_j * h + node.y0, q.footprint, q.s, q.sigma);
     if (v != 0.0) ++stats.elements_evaluated;
     return v;
   }
@@ -158,8 +160,9 @@ double GlintPndf::traverse(const TargetNode& node, const Query& q, PndfStatistic
     ++stats.nodes_aggregated;
     const int64_t x = (node.patch_i * h + node.x0 - q.texels.t0_lo) * kK;
     const int64_t y = (node.patch_j * h + node.y0 - q.texels.t1_lo) * kK;
-    const double mass = q.common * (q.prefix_x[size_t(x + node.width * kK)] - q.prefix_x[size_t(x)]) *
-                        (q.prefix_y[size_t(y + node.height * kK)] - q.prefix_y[size_t(y)]);
+    const FootprintMasses& m = q.masses;
+    const double mass = m.common * (m.prefix_x[size_t(x + node.width * kK)] - m.prefix_x[size_t(x)]) *
+                        (m.prefix_y[size_t(y + node.height * kK)] - m.prefix_y[size_t(y)]);
     const Vec2 c(0.5 * (b.min_x + b.max_x), 0.5 * (b.min_y + b.max_y));
     const double var = q.sigma * q.sigma;
     return mass * std::exp(-0.5 * (q.s - c).squaredNorm() / var) / (2.0 * std::numbers::pi * var);
@@ -182,12 +185,8 @@ double GlintPndf::evaluate(const GlintFootprint& footprint, const Vec2& s, PndfS
                            bool aggregate) const {
   const TexelRange t = footprint_texels(footprint);
   if (t.empty()) return 0.0;
-  Query q{footprint, s, normal_sigma(footprint), t, aggregate, {}, {}};
-  if (aggregate) {
-    q.prefix_x = running_sums(axis_weights(t.t0_lo, t.t0_hi, footprint.center.x(), footprint.sigma));
-    q.prefix_y = running_sums(axis_weights(t.t1_lo, t.t1_hi, footprint.center.y(), footprint.sigma));
-    q.common = element_footprint_mass(footprint.center, kGlintSubElementSigmaTexels, footprint, q.sigma);
-  }
+  const double sigma = normal_sigma(footprint);
+  const Query q{footprint, s, sigma, t, aggregate, FootprintMasses(footprint, t, sigma)};
   PndfStatistics local;
   const int64_t h = range_->target_side();
   double sum = 0.0;
@@ -210,7 +209,7 @@ double GlintPndf::evaluate(const GlintFootprint& footprint, const Vec2& s, PndfS
     stats->rmq_lookups += local.rmq_lookups;
     stats->nodes_aggregated += local.nodes_aggregated;
   }
-  return sum / normalizer(footprint, t);
+  return sum / q.masses.total();
 }
 
 std::optional<Vec2> GlintPndf::sample(const GlintFootprint& footprint, const std::function<double()>& uniform) const {

@@ -104,10 +104,10 @@ class GlintPndf {
   std::optional<Vec2> sample_once(const GlintFootprint& footprint, const std::function<double()>& uniform) const;
 
  private:
-  double element_term(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Vec2& s) const;
+  // sigma = normal_sigma(footprint), computed once per evaluation.
+  double element_term(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Vec2& s, double sigma) const;
   double normal_sigma(const GlintFootprint& footprint) const;  // sigma_r widened by the footprint's spread
   bool outside(const RmqBounds& b, const Vec2& s, double sigma) const;
-  double normalizer(const GlintFootprint& footprint, const TexelRange& texels) const;
   struct Query;  // what one traversal shares with every node (glint_pndf.cpp)
   double traverse(const TargetNode& node, const Query& q, PndfStatistics& stats) const;
   std::optional<Vec2> draw(const GlintFootprint& footprint, const TexelRange& t, const std::vector<double>& wx,
