@@ -1,7 +1,7 @@
-// `microbake render SCENE.json -o OUT.{exr,png} [--spp N] [--reference N] [--seed S] [--assets DIR]`: the reference
-// shader evaluator (libbake/eval/renderer.h). EXR output is linear radiance, PNG is tone-mapped for viewing
-// (libbake/eval/render_output.h). Effects read their baked assets from the asset folder (default
-// <scene folder>/<scene stem>.assets, as `bake` writes it); --reference needs no assets.
+// `microbake render SCENE.json -o OUT.{exr,png} [--spp N] [--max-probes N] [--reference N] [--seed S]
+// [--assets DIR]`: the reference shader evaluator (libbake/eval/renderer.h). EXR output is linear radiance, PNG is
+// tone-mapped for viewing (libbake/eval/render_output.h). Effects read their baked assets from the asset folder
+// (default <scene folder>/<scene stem>.assets, as `bake` writes it); --reference needs no assets.
 #include <chrono>
 #include <cstdio>
 
@@ -28,10 +28,15 @@ class RenderCommand : public Command {
            "Ground truth instead: N x N sub-pixel rays per pixel with unfiltered normals from the raw maps (no assets)")
         ->check(CLI::Range(1u, 256u));
     app.add_option("--seed", options_.seed,
-                   "Seed of the sub-pixel jitter: two references with different seeds measure the reference's own "
-                   "noise floor")
+                   "Seed of the reference's sub-pixel jitter: two references with different seeds measure its own "
+                   "noise floor (render mode samples each cell's centre)")
         ->check(CLI::Range(0u, 4294967295u))
         ->default_val(0u);
+    app.add_option("--max-probes", options_.max_probes,
+                   "Anisotropic filtering: at most this many probes along a footprint's major axis per filtered "
+                   "lookup (render mode; 1 = isotropic)")
+        ->check(CLI::Range(1, kMaxFootprintProbes))
+        ->default_val(options_.max_probes);
     app.add_option("--assets", options_.assets,
                    "Folder of baked assets (default: <scene folder>/<scene stem>.assets, as 'bake' writes)");
     add_run_options(app, options_.run);
@@ -55,6 +60,7 @@ class RenderCommand : public Command {
     settings.spp = options_.spp;
     settings.reference = options_.reference;
     settings.seed = options_.seed;
+    settings.max_probes = options_.max_probes;
     settings.asset_folder =
         options_.assets.empty() ? default_asset_folder(scene) : std::filesystem::path(options_.assets);
     const RenderInputs inputs = load_render_inputs(scene, settings);
@@ -77,6 +83,7 @@ class RenderCommand : public Command {
     OutputOption output;
     uint32_t spp = 1;
     uint32_t reference = 0;
+    int max_probes = UvFootprint{}.max_probes;
     uint32_t seed = 0;
     std::string assets;
     RunOptions run;

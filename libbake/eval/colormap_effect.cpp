@@ -31,9 +31,16 @@ struct DriverSource {
   NoiseFootprint statistics(const Vec2& uv, const UvFootprint& f) const {
     NoiseFootprint s;
     if (pyramid) {
+      // The footprint's moments from its probes': E[d] and E[d^2] are means over the footprint.
       const Image& l0 = pyramid->levels.at(0);
-      const FootprintMoments m = sample_moments(*pyramid, uv, mip_lod(f, l0.width, l0.height));
-      s = {m.mean, m.variance};
+      const FootprintProbes probes = footprint_probes(uv, f, l0.width, l0.height);
+      double mean = 0.0, second = 0.0;
+      for (const FootprintProbe& p : probes) {
+        const FootprintMoments m = sample_moments(*pyramid, p.uv, p.lod);
+        mean += m.mean / probes.size();
+        second += (m.variance + m.mean * m.mean) / probes.size();
+      }
+      s = {mean, std::max(0.0, second - mean * mean)};
     } else {
       const Vec2 box(std::abs(f.duv_dx.x()) + std::abs(f.duv_dy.x()), std::abs(f.duv_dx.y()) + std::abs(f.duv_dy.y()));
       // A grazing ray's footprint is unbounded: the noise's statistics at a footprint far above its cell size.

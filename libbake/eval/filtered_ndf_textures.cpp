@@ -96,41 +96,59 @@ VmfTexture VmfTexture::from_asset(const Asset& asset) {
 }
 
 std::vector<VmfLobeShape> VmfTexture::lookup(const Vec2& uv, double lod, std::vector<double>* features) const {
+  FootprintProbes probe;
+  probe.push_back({uv, lod});
+  return lookup(probe, features);
+}
+
+std::vector<VmfLobeShape> VmfTexture::lookup(const FootprintProbes& probes, std::vector<double>* features) const {
   const size_t J = size_t(lobes_), F = size_t(features_);
-  const bool finest = finite(uv, lod) && level_blend(levels(), lod).fine == 0;
+  bool all_finite = probes.size() > 0, finest = false;
+  for (const FootprintProbe& p : probes) {
+    all_finite = all_finite && finite(p.uv, p.lod);
+    finest = finest || (finite(p.uv, p.lod) && level_blend(levels(), p.lod).fine == 0);
+  }
   const size_t slots = J + (finest ? 1 : 0);
   std::vector<VmfLobeShape> lobes(slots);
   if (features) features->assign(slots * F, 0.0);
-  if (!finite(uv, lod)) return lobes;
-  // T(alpha), T(alpha r), T(alpha y) per slot ([Han07] Sec. 7.6.4.2); below LOD 1, slot J gathers level 0.
-  std::vector<double> premultiplied(slots * 4, 0.0), weighted_features(slots * F, 0.0);
-  const LevelBlend b = level_blend(levels(), lod);
-  for (const auto& [level, weight] : {std::pair{b.fine, 1.0 - b.t}, std::pair{b.coarse, b.t}}) {
-    if (weight == 0.0) continue;
-    const uint32_t w = widths_[level];
-    for (const TextureTap& tap : bilinear_taps(w, heights_[level], uv)) {
-      const size_t texel = size_t(tap.row) * w + tap.x;
-      for (size_t q = 0; q < J * 4; ++q) {
-        const size_t to = level == 0 ? J * 4 + q % 4 : q;  // level 0: every slot into slot J
-        premultiplied[to] += weight * tap.weight * levels_[level][texel * J * 4 + q];
-      }
-      for (size_t q = 0; q < J * F; ++q) {
-        const size_t to = level == 0 ? J * F + q % F : q;
-        weighted_features[to] += weight * tap.weight * feature_levels_[level][texel * J * F + q];
+  if (!all_finite) return lobes;
+  // T(alpha), T(alpha r), T(alpha y) per slot ([Han07] Sec. 7.6.4.2), averaged over the probes (the slot-wise
+  // box filter the pyramid's own levels apply); below LOD 1, slot J gathers level 0.
+  std::vector<double> premultiplied(slots * 4, 0.0), weighted_features(slots * F, 0.0), level0(4);
+  for (const FootprintProbe& p : probes) {
+    const LevelBlend b = level_blend(levels(), p.lod);
+    std::fill(level0.begin(), level0.end(), 0.0);
+    for (const auto& [level, blend] : {std::pair{b.fine, 1.0 - b.t}, std::pair{b.coarse, b.t}}) {
+      if (blend == 0.0) continue;
+      const double weight = blend / probes.size();
+      const uint32_t w = widths_[level];
+      for (const TextureTap& tap : bilinear_taps(w, heights_[level], p.uv)) {
+        const size_t texel = size_t(tap.row) * w + tap.x;
+        for (size_t q = 0; q < J * 4; ++q) {
+          const double value = weight * tap.weight * levels_[level][texel * J * 4 + q];
+          if (level == 0)
+            level0[q % 4] += value;  // every slot of level 0 into slot J, below
+          else
+            premultiplied[q] += value;
+        }
+        for (size_t q = 0; q < J * F; ++q) {
+          const size_t to = level == 0 ? J * F + q % F : q;
+          weighted_features[to] += weight * tap.weight * feature_levels_[level][texel * J * F + q];
+        }
       }
     }
-  }
-  if (finest) {
     // Level 0 holds one lobe (1, n) per texel, in whichever slot the coherence pass chose. Blending the taps
     // per slot (Alg. 7.2) would shade two or more lobes between unequal neighbours, or one whose |r| < 1 reads
-    // as a spread; plain normal mapping and the reference shade the renormalised interpolated normal. So the
-    // level-0 part is one lobe: alpha = the level's weight, r = the interpolated normal rescaled to length 1
-    // (kappa_max). Deviation [Han07]: Alg. 7.2 blends level 0 like any other level (test:
+    // as a spread; plain normal mapping and the reference shade the renormalised interpolated normal. So a
+    // probe's level-0 part is one delta: alpha = its weight, r = the interpolated normal rescaled to length
+    // alpha (kappa_max); the deltas of several probes then add up to slot J, whose |r| < alpha is the spread
+    // between them. Deviation [Han07]: Alg. 7.2 blends level 0 like any other level (test:
     // FilteredNdfEffects.MagnifiedBumpyMapMatchesPlainNormalMapping).
-    double* q = &premultiplied[4 * J];
-    const double len = std::sqrt(q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-    if (len > 1e-6 * q[0])
-      for (int a = 1; a <= 3; ++a) q[a] *= q[0] / len;
+    const double len = std::sqrt(level0[1] * level0[1] + level0[2] * level0[2] + level0[3] * level0[3]);
+    if (len > 1e-6 * level0[0])
+      for (int a = 1; a <= 3; ++a) level0[size_t(a)] *= level0[0] / len;
+    if (finest)
+      for (size_t a = 0; a < 4; ++a) premultiplied[4 * J + a] += level0[a];
   }
   for (size_t j = 0; j < slots; ++j) {
     const double* q = &premultiplied[4 * j];

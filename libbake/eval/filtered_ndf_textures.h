@@ -19,6 +19,7 @@
 #include "formats/asset.h"
 #include "libbake/core/sh_basis.h"
 #include "libbake/core/vmf_lobe.h"
+#include "libbake/eval/uv_footprint.h"
 
 namespace mbk {
 
@@ -59,6 +60,9 @@ class VmfTexture {
   // y_j per returned lobe (already divided by the interpolated alpha; 0 for an empty slot). NaN uv or lod give J
   // empty lobes.
   std::vector<VmfLobeShape> lookup(const Vec2& uv, double lod, std::vector<double>* features = nullptr) const;
+  // The same over an anisotropic footprint: each slot's premultiplied (alpha, alpha r, alpha y) averaged over the
+  // probes (uv_footprint.h), so still J (+ 1) lobes. Any non-finite probe gives J empty lobes.
+  std::vector<VmfLobeShape> lookup(const FootprintProbes& probes, std::vector<double>* features = nullptr) const;
 
  private:
   int lobes_ = 0, features_ = 0;

@@ -4,7 +4,7 @@
 //   no normal map         (0, 0, 1): the geometric normal
 //   baseline (no effect)  plain MIP-mapped normal mapping: the pyramid is built in memory from the
 //                         material's map (libbake/image/normal_pyramid.h), looked up trilinearly at the
-//                         footprint's LOD (uv_footprint.h) and renormalised
+//                         footprint's anisotropic probes (uv_footprint.h), averaged and renormalised
 //   effect `mip`          the same lookup in the baked mip asset (mip_effect.h), read through formats/
 //   --reference           the raw map's level 0, bilinear (no filtering): the footprint is resolved by
 //                         tracing many sub-pixel rays instead

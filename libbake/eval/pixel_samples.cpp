@@ -18,4 +18,8 @@ Vec2 sample_offset(uint32_t x, uint32_t y, uint32_t index, const SampleGrid& gri
               (j + unit_from_hash(hash4(x, y, index, stream + 1))) / grid.rows);
 }
 
+Vec2 cell_centre(uint32_t index, const SampleGrid& grid) {
+  return Vec2((index % grid.cols + 0.5) / grid.cols, (index / grid.cols + 0.5) / grid.rows);
+}
+
 }  // namespace mbk

@@ -19,5 +19,7 @@ struct SampleGrid {
 SampleGrid sample_grid(uint32_t count);
 // Offset in [0, 1)^2 inside pixel (x, y) of sample `index` < grid.count().
 Vec2 sample_offset(uint32_t x, uint32_t y, uint32_t index, const SampleGrid& grid, uint32_t seed = 0);
+// The centre of cell `index` < grid.count(), the same cell order as sample_offset.
+Vec2 cell_centre(uint32_t index, const SampleGrid& grid);
 
 }  // namespace mbk

@@ -21,13 +21,14 @@ struct ShapeShading {
 };
 
 Vec3 radiance_along(const Scene& scene, const std::vector<ShapeShading>& shading, const SceneLighting& lighting,
-                    const RayDifferential& r) {
+                    const RayDifferential& r, int max_probes) {
   const auto hit = intersect_scene(scene.shapes, r.ray);
   if (!hit) return background(lighting, r.ray.direction);
   const ShapeShading& s = shading[hit->shape];
   const Vec3 to_viewer = -r.ray.direction;
-  const ShadingContext context{hit->p,    hit->uv,  uv_footprint(*hit, r), surface_frame(*hit, to_viewer),
-                               to_viewer, &lighting};
+  UvFootprint footprint = uv_footprint(*hit, r);
+  footprint.max_probes = max_probes;
+  const ShadingContext context{hit->p, hit->uv, footprint, surface_frame(*hit, to_viewer), to_viewer, &lighting};
   return s.shader->radiance(context, s.brdf);
 }
 
@@ -65,8 +66,16 @@ Image render_scene(const Scene& scene, const RenderInputs& inputs, const RenderS
     for (uint32_t x = 0; x < image.width; ++x) {
       Vec3 sum = Vec3::Zero();
       for (uint32_t s = 0; s < grid.count(); ++s) {
-        const Vec2 o = sample_offset(x, y, s, grid, settings.seed);
-        sum += radiance_along(scene, shading, inputs.lighting, camera.ray(x + o.x(), y + o.y()));
+        if (settings.reference > 0) {
+          const Vec2 o = sample_offset(x, y, s, grid, settings.seed);
+          sum += radiance_along(scene, shading, inputs.lighting, camera.ray(x + o.x(), y + o.y()), 1);
+        } else {  // the cell's centre with the cell's footprint (see renderer.h)
+          const Vec2 o = cell_centre(s, grid);
+          RayDifferential r = camera.ray(x + o.x(), y + o.y());
+          r.ddx /= grid.cols;
+          r.ddy /= grid.rows;
+          sum += radiance_along(scene, shading, inputs.lighting, r, settings.max_probes);
+        }
       }
       const Vec3 pixel = sum / double(grid.count());
       for (uint32_t c = 0; c < 3; ++c) image.at(x, y, c) = float(pixel[c]);

@@ -6,9 +6,13 @@
 //
 // Two modes share every line of this loop and differ only in how shaders are built and how many rays a
 // pixel gets:
-//   render      `spp` rays per pixel; each material's effects (or the baseline) filter over the whole
-//               pixel's footprint: a sample's footprint is the pixel's, not spp times smaller, as a
-//               rasteriser's derivatives are;
+//   render      `spp` rays per pixel, one through the centre of each cell of the stratified grid, each
+//               carrying that cell's footprint (its differentials divided by the grid's columns and rows):
+//               the cells tile the pixel, so the effects filter exactly the box the reference averages.
+//               (A pixel-sized footprint per sample, as a rasteriser's derivatives are, filters the pixel
+//               convolved with itself: twice as wide; a jittered position moves the box off the pixel.) Each
+//               filtered lookup covers its footprint with up to `max_probes` anisotropic probes
+//               (uv_footprint.h);
 //   reference   N x N rays per pixel, every effect's ground truth unfiltered (the baseline: bilinear in the
 //               raw map's level 0): the brute-force image every technique is compared with. No assets are
 //               read.
@@ -22,16 +26,18 @@
 #include "libbake/core/progress.h"
 #include "libbake/eval/material_shaders.h"
 #include "libbake/eval/scene_lighting.h"
+#include "libbake/eval/uv_footprint.h"
 #include "libbake/image/image_io.h"
 #include "libbake/scene/scene.h"
 
 namespace mbk {
 
 struct RenderSettings {
-  uint32_t spp = 1;                    // samples per pixel (render mode)
-  uint32_t reference = 0;              // > 0: reference mode with reference x reference samples per pixel
-  uint32_t seed = 0;                   // sub-pixel jitter seed (pixel_samples.h); 0 is the default jitter
-  std::filesystem::path asset_folder;  // where effects' assets are; empty: default_asset_folder(scene)
+  uint32_t spp = 1;        // samples per pixel (render mode)
+  uint32_t reference = 0;  // > 0: reference mode with reference x reference samples per pixel
+  uint32_t seed = 0;       // reference mode's sub-pixel jitter seed (pixel_samples.h); 0 is the default
+  int max_probes = UvFootprint{}.max_probes;  // render mode: anisotropic probes per filtered lookup
+  std::filesystem::path asset_folder;         // where effects' assets are; empty: default_asset_folder(scene)
 };
 
 // What a render reads from disk: projected distant lighting and each material's shader.

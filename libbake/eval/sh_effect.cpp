@@ -53,8 +53,13 @@ class ShNdfShader : public MaterialShader {
 
   Vec3 radiance(const ShadingContext& c, const Brdf& brdf) const override {
     const int order = texture_->order();
-    std::vector<double> g(size_t(basis_.count()));
-    texture_->lookup(c.uv, mip_lod(c.footprint, texture_->width(), texture_->height()), g);
+    // The footprint's NDF: SH coefficients are linear in it, so the mean of its probes' coefficients.
+    std::vector<double> g(size_t(basis_.count()), 0.0), probe_g(g.size());
+    const FootprintProbes probes = footprint_probes(c.uv, c.footprint, texture_->width(), texture_->height());
+    for (const FootprintProbe& p : probes) {
+      texture_->lookup(p.uv, p.lod, probe_g);
+      for (size_t k = 0; k < g.size(); ++k) g[k] += probe_g[k] / probes.size();
+    }
     const SurfaceFrame& f = c.frame;
     const auto to_tangent = [&](const Vec3& w) { return Vec3(w.dot(f.T), w.dot(f.B), w.dot(f.N)); };
     const std::span<const double> window(texture_->window());

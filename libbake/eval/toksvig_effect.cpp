@@ -16,16 +16,20 @@ class ToksvigShader : public MaterialShader {
 
   Vec3 radiance(const ShadingContext& c, const Brdf& brdf) const override {
     const NormalMap& finest = pyramid_->levels[0];
-    const double lod = mip_lod(c.footprint, finest.width, finest.height);
-    Vec3 m = sample_pyramid(*pyramid_, c.uv, lod);
-    if (lod < 1.0) {
-      // The level-0 part (weight 1 - lod) is the bilinear blend of four unit normals, shorter than 1 between
-      // unequal taps; plain normal mapping and the reference shade it renormalised, so do we (no widening from
-      // interpolation alone; test: FilteredNdfEffects.MagnifiedBumpyMapMatchesPlainNormalMapping).
-      const Vec3 m0 = sample_bilinear(finest, c.uv);
-      const double len0 = m0.norm();
-      if (len0 > 1e-6) m += (1.0 - std::max(0.0, lod)) * (m0 / len0 - m0);
+    const FootprintProbes probes = footprint_probes(c.uv, c.footprint, finest.width, finest.height);
+    Vec3 m = Vec3::Zero();  // the footprint's mean normal: the mean of its probes' means
+    for (const FootprintProbe& p : probes) {
+      m += sample_pyramid(*pyramid_, p.uv, p.lod);
+      if (p.lod < 1.0) {
+        // The level-0 part (weight 1 - lod) is the bilinear blend of four unit normals, shorter than 1 between
+        // unequal taps; plain normal mapping and the reference shade it renormalised, so do we (no widening from
+        // interpolation alone; test: FilteredNdfEffects.MagnifiedBumpyMapMatchesPlainNormalMapping).
+        const Vec3 m0 = sample_bilinear(finest, p.uv);
+        const double len0 = m0.norm();
+        if (len0 > 1e-6) m += (1.0 - std::max(0.0, p.lod)) * (m0 / len0 - m0);
+      }
     }
+    m /= probes.size();
     const double len = m.norm();
     // As material_normals.cpp: a mean shorter than 1e-6 has lost its direction (and its lobe is flat).
     const Vec3 n = len > 1e-6 ? Vec3(m / len) : Vec3::UnitZ();

@@ -1,4 +1,4 @@
-// Ray-differential footprints in uv and the MIP level they select (see uv_footprint.h).
+// Ray-differential footprints in uv and the anisotropic probes that filter them (see uv_footprint.h).
 #include "libbake/eval/uv_footprint.h"
 
 #include <algorithm>
@@ -22,7 +22,7 @@ Vec2 solve_uv(const SurfaceHit& h, const Vec3& dp) {
 
 Vec3 transfer(const SurfaceHit& h, const Vec3& D, const Vec3& dD) {
   const Vec3 at_same_t = h.t * dD;                               // where the neighbouring ray is at the same distance t
-  const double dt = -at_same_t.dot(h.normal) / D.dot(h.normal);  // +-inf or NaN at grazing incidence, caught by mip_lod
+  const double dt = -at_same_t.dot(h.normal) / D.dot(h.normal);  // +-inf or NaN at grazing incidence (footprint_probes)
   return at_same_t + dt * D;
 }
 
@@ -37,12 +37,42 @@ UvFootprint uv_footprint(const SurfaceHit& hit, const RayDifferential& ray) {
   return {solve_uv(hit, dp_dx), solve_uv(hit, dp_dy), dp_dx, dp_dy, view_step(ray.ddx), view_step(ray.ddy)};
 }
 
-double mip_lod(const UvFootprint& f, uint32_t map_width, uint32_t map_height) {
+FootprintProbes footprint_probes(const Vec2& uv, const UvFootprint& f, uint32_t map_width, uint32_t map_height) {
+  FootprintProbes probes;
   const Vec2 size(map_width, map_height);
-  const double rho = std::max(f.duv_dx.cwiseProduct(size).norm(), f.duv_dy.cwiseProduct(size).norm());
-  if (!std::isfinite(rho)) return kMaxLod;  // grazing ray: the footprint is unbounded
-  if (!(rho > 1.0)) return 0.0;             // magnification (also rho == 0 for a degenerate footprint)
-  return std::min(std::log2(rho), kMaxLod);
+  const Vec2 a = f.duv_dx.cwiseProduct(size), b = f.duv_dy.cwiseProduct(size);
+  if (!a.allFinite() || !b.allFinite()) {
+    probes.push_back({uv, kMaxLod});  // grazing ray: the footprint is unbounded
+    return probes;
+  }
+  // M M^T = a a^T + b b^T = [[pxx, q], [q, pyy]]; its eigenvalues are s1^2 >= s2^2. s2^2 = det(M)^2 / s1^2 avoids
+  // the cancellation of (p + r - h) / 2 for thin ellipses.
+  const double pxx = a.x() * a.x() + b.x() * b.x(), pyy = a.y() * a.y() + b.y() * b.y();
+  const double q = a.x() * a.y() + b.x() * b.y();
+  const double h = std::hypot(pxx - pyy, 2.0 * q);
+  const double s1_sq = 0.5 * (pxx + pyy + h);
+  const double s1 = std::sqrt(s1_sq);
+  const double det = a.x() * b.y() - a.y() * b.x();
+  const double s2 = s1 > 0.0 ? std::abs(det) / s1 : 0.0;
+  if (!(s1 > 1.0)) {  // magnification, or a degenerate footprint
+    probes.push_back({uv, 0.0});
+    return probes;
+  }
+  const int cap = std::clamp(f.max_probes, 1, kMaxFootprintProbes);
+  const double ratio = s2 > 0.0 ? s1 / s2 : double(cap);
+  const int n = int(std::min({double(cap), std::ceil(ratio - 1e-9), std::ceil(s1)}));
+  const double lod = std::clamp(std::log2(std::max(s2, s1 / n)), 0.0, kMaxLod);
+  if (n == 1) {
+    probes.push_back({uv, lod});
+    return probes;
+  }
+  // The major axis: the eigenvector of M M^T for s1^2, from whichever row of (M M^T - s1^2 I) is larger.
+  Vec2 axis = std::abs(pxx - s1_sq) > std::abs(pyy - s1_sq) ? Vec2(q, s1_sq - pxx) : Vec2(s1_sq - pyy, q);
+  const double len = axis.norm();
+  axis = len > 0.0 ? Vec2(axis / len) : Vec2(1.0, 0.0);
+  const Vec2 step = (s1 * axis).cwiseQuotient(size);  // the major axis's full length, in uv
+  for (int i = 0; i < n; ++i) probes.push_back({uv + ((i + 0.5) / n - 0.5) * step, lod});
+  return probes;
 }
 
 }  // namespace mbk

@@ -6,10 +6,22 @@
 // 2x2 normal equations of [dp/du dp/dv]); likewise for y. These are the uv-space derivatives duv/dx,
 // duv/dy a GPU obtains from its 2x2 pixel quads.
 //
-// LOD: the footprint in texels is rho = max(|duv/dx * (W, H)|, |duv/dy * (W, H)|) for a W x H map (the
-// isotropic rule of OpenGL 4.6, 8.14.1), and lod = log2(rho), clamped at 0 (magnification); a
-// footprint that is infinite (grazing rays) gives kMaxLod, which the pyramid clamps to its coarsest level.
+// Anisotropic probes (footprint_probes): the footprint in texels is the image of the pixel under the
+// Jacobian M = [duv/dx * (W, H), duv/dy * (W, H)] for a W x H map, an ellipse with semi-axes proportional to
+// M's singular values s1 >= s2 (Heckbert 1989, the EWA ellipse; OpenGL's isotropic rule, 4.6 8.14.1, takes the
+// longer column of M as its size instead).
+// A lookup at the minor axis's level would be too sharp and one at the major axis's too blurred, so the
+// footprint is covered, as GPU anisotropic filtering does (EXT_texture_filter_anisotropic), by N probes
+//     N = min(max_probes, ceil(s1 / s2), ceil(s1)),   probe i at uv + ((i + 1/2) / N - 1/2) s1 u1 / (W, H),
+// each a trilinear lookup at lod = log2(max(s2, s1 / N)), clamped at 0 (magnification), equally weighted (a
+// box pixel: the reference's pixel filter), u1 the major axis's unit direction in texels. A circle (or
+// max_probes = 1) gives one probe at lod log2(s1), the isotropic rule when the columns are orthogonal and
+// equally long. A footprint that is infinite (grazing rays) gives one probe at kMaxLod, which every pyramid
+// clamps to its coarsest level.
 #pragma once
+
+#include <array>
+#include <span>
 
 #include "libbake/eval/camera_rays.h"
 #include "libbake/eval/shape_intersection.h"
@@ -23,11 +35,35 @@ struct UvFootprint {
   // viewer does not move). The glints effect turns them into the half vector's sweep over the pixel.
   Vec3 dp_dx = Vec3::Zero(), dp_dy = Vec3::Zero();
   Vec3 dview_dx = Vec3::Zero(), dview_dy = Vec3::Zero();
+  // The cap on anisotropic probes per lookup (`render --max-probes`; 1 = isotropic filtering).
+  int max_probes = 16;
 };
 
 inline constexpr double kMaxLod = 64.0;
+inline constexpr int kMaxFootprintProbes = 64;
+
+// One trilinear lookup of an anisotropic footprint: where, and at which level of detail.
+struct FootprintProbe {
+  Vec2 uv = Vec2::Zero();
+  double lod = 0.0;
+};
+
+// The probes covering a footprint, each of weight 1 / size().
+class FootprintProbes {
+ public:
+  void push_back(const FootprintProbe& p) { probes_[size_t(count_++)] = p; }
+  int size() const { return count_; }
+  const FootprintProbe* begin() const { return probes_.data(); }
+  const FootprintProbe* end() const { return probes_.data() + count_; }
+
+ private:
+  std::array<FootprintProbe, kMaxFootprintProbes> probes_;
+  int count_ = 0;
+};
 
 UvFootprint uv_footprint(const SurfaceHit& hit, const RayDifferential& ray);
-double mip_lod(const UvFootprint& footprint, uint32_t map_width, uint32_t map_height);
+// The anisotropic probes of the footprint at uv for a W x H map (see above). Non-finite footprints (grazing
+// rays) give one probe at kMaxLod; max_probes is clamped to [1, kMaxFootprintProbes].
+FootprintProbes footprint_probes(const Vec2& uv, const UvFootprint& footprint, uint32_t map_width, uint32_t map_height);
 
 }  // namespace mbk

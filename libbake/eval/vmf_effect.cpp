@@ -26,7 +26,8 @@ class VmfShader : public MaterialShader {
     std::vector<VmfLobeShape> lobes;
     std::vector<Brdf> widened;
     std::vector<std::vector<double>> filtered;  // rhat_l Lambda_l(kappa_j), once per lobe (Eqs. 7.14, 7.23)
-    for (VmfLobeShape lobe : texture_->lookup(c.uv, mip_lod(c.footprint, texture_->width(), texture_->height()))) {
+    const FootprintProbes probes = footprint_probes(c.uv, c.footprint, texture_->width(), texture_->height());
+    for (VmfLobeShape lobe : texture_->lookup(probes)) {
       if (!(lobe.alpha > 0.0)) continue;
       lobe.mu = facing_viewer(f.to_world(lobe.mu).normalized(), v);
       Brdf b = brdf;

@@ -1,6 +1,6 @@
 // Ray-differential footprints: duv/dx and duv/dy equal the finite differences of the uv that neighbouring
 // film positions' rays hit (tightly for tiny offsets, to first order for whole pixels); a plane seen head-on
-// has the closed-form footprint; LOD = log2 of the footprint in texels.
+// has the closed-form footprint. (The probes and levels of detail: anisotropic_footprint_test.cpp.)
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -111,23 +111,6 @@ TEST(UvFootprint, HeadOnPlaneHasTheClosedFormFootprint) {
   EXPECT_NEAR(f.duv_dx.y(), 0.0, 1e-12);
   EXPECT_NEAR(f.duv_dy.x(), 0.0, 1e-12);
   EXPECT_NEAR(f.duv_dy.y(), -pixel * 3.0 / 5.0, 1e-12);  // film y grows downwards, v upwards
-}
-
-TEST(UvFootprint, LodIsLog2OfTheLargerFootprintInTexels) {
-  UvFootprint f;
-  f.duv_dx = Vec2(4.0 / 256, 0.0);
-  f.duv_dy = Vec2(0.0, 1.0 / 128);
-  EXPECT_DOUBLE_EQ(mip_lod(f, 256, 128), 2.0);  // 4 texels across x, 1 along y
-  f.duv_dx = Vec2(3.0 / 64, 4.0 / 32);          // (3, 4) texels: length 5
-  EXPECT_DOUBLE_EQ(mip_lod(f, 64, 32), std::log2(5.0));
-  f.duv_dx = f.duv_dy = Vec2(0.1 / 64, 0.0);  // magnification
-  EXPECT_EQ(mip_lod(f, 64, 64), 0.0);
-  f.duv_dx = f.duv_dy = Vec2::Zero();  // degenerate
-  EXPECT_EQ(mip_lod(f, 64, 64), 0.0);
-  f.duv_dx = Vec2(INFINITY, 0.0);  // grazing
-  EXPECT_EQ(mip_lod(f, 64, 64), kMaxLod);
-  f.duv_dx = Vec2(NAN, 0.0);
-  EXPECT_EQ(mip_lod(f, 64, 64), kMaxLod);
 }
 
 TEST(UvFootprint, SpherePoleStaysFinite) {
