@@ -94,6 +94,7 @@ rows=""
 reference_times=""
 data="$work/accuracy.dat"
 : >"$data"
+declare -A floor=()
 for entry in "${maps[@]}"; do
   IFS='|' read -r map path convention <<<"$entry"
   ref_line="| $map |"
@@ -103,8 +104,16 @@ for entry in "${maps[@]}"; do
     "$exe" render "$work/$map.$scene.ref.json" --reference "$ref_n" -q -o "$work/$map.$scene.ref.exr"
     ref_line+=" $(elapsed "$t") |"
     echo "report-filtering: $map $scene reference (${ref_n}x$ref_n) $(elapsed "$t") s" >&2
+    # The reference's own noise floor: a second reference with other sub-pixel rays (--seed 1).
+    "$exe" render "$work/$map.$scene.ref.json" --reference "$ref_n" --seed 1 -q -o "$work/$map.$scene.ref2.exr"
+    floor[$scene]=$(rmse "$work/$map.$scene.ref2.exr" "$work/$map.$scene.ref.exr")
   done
   reference_times+="$ref_line"$'\n'
+  far=$(crop_rmse "$work/$map.plane.ref2.exr" "$work/$map.plane.ref.exr" far)
+  near=$(crop_rmse "$work/$map.spheres.ref2.exr" "$work/$map.spheres.ref.exr" near)
+  mid=$(crop_rmse "$work/$map.spheres.ref2.exr" "$work/$map.spheres.ref.exr" mid)
+  distant=$(crop_rmse "$work/$map.spheres.ref2.exr" "$work/$map.spheres.ref.exr" distant)
+  rows+="| $map | *reference floor* | | | | ${floor[plane]} | $far | | ${floor[spheres]} | $near | $mid | $distant | ${floor[env]} |"$'\n'
   echo "\"$map\"" >>"$data"
   for m in "${methods[@]}"; do
     IFS='|' read -r name effect <<<"$m"
@@ -171,7 +180,9 @@ bytes are the baked asset's file size. RMSE of linear radiance (\`microbake comp
 crop's bottom row to thousands at the horizon); "near", "mid", "distant" an interior crop of each sphere (no
 silhouette pixels; ~1.5, ~5 and ~60 texels per pixel on the 256^2 map, twice that on the 512^2 maps); "env" the
 spheres lit by an environment map alone (bands 0-2, [Han07] Eq. 7.23), whole image. vMF assets are baked with
-\`tolerance\` 1e-4 (see "Bake cost": the same log-likelihood within 0.01 nats per normal as 1e-6).
+\`tolerance\` 1e-4 (see "Bake cost": the same log-likelihood within 0.01 nats per normal as 1e-6). Each map's
+first row, *reference floor*, is a second reference with other sub-pixel rays (\`--seed 1\`) against the first:
+no method can be measured below it.
 
 Reference render times (s), ${ref_n} x ${ref_n} rays per pixel:
 
