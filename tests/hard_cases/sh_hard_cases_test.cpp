@@ -38,7 +38,8 @@ double worst_error_in_tolerances(const Vec3f& n, int order) {
 // 256 44x the f32 tolerance (`sh --precision f32`; f16's coarser tolerance hid it). Fixed: the pyramid normalises
 // each normal in double before the basis.
 TEST(HardCases, ShOrder128NearThePoleFromFloatNormals) {
-  for (const Vec3f& n : {float_normal(0.01, 0.02, 1.0), float_normal(-3e-4, 1e-4, 1.0), float_normal(0.05, -0.07, -1.0)}) {
+  for (const Vec3f& n :
+       {float_normal(0.01, 0.02, 1.0), float_normal(-3e-4, 1e-4, 1.0), float_normal(0.05, -0.07, -1.0)}) {
     SCOPED_TRACE(std::abs(n.cast<double>().norm() - 1.0));
     EXPECT_LE(worst_error_in_tolerances(n, 128), 1.0);
   }

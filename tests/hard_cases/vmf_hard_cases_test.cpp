@@ -143,8 +143,7 @@ TEST(HardCases, VmfShaderUniformLobeReflectsAQuarter) {
   for (const double kappa : {0.0, 1e-300, 1e-8}) {
     const VmfLobeShape lobe{1.0, kappa, Vec3(0.6, 0.0, 0.8)};
     for (const Vec3& w : {Vec3(0, 0, 1), Vec3(0, 1, 0), Vec3(0.6, 0.0, 0.8), Vec3(0, 0, -1)})
-      EXPECT_NEAR(vmf_filtered_brdf(std::span(&lobe, 1), rhat, w), 0.25 + kappa * w.dot(lobe.mu) / 6, 1e-15)
-          << kappa;
+      EXPECT_NEAR(vmf_filtered_brdf(std::span(&lobe, 1), rhat, w), 0.25 + kappa * w.dot(lobe.mu) / 6, 1e-15) << kappa;
   }
 }
 
