@@ -99,10 +99,11 @@ TEST(HardCases, CreaseEndpointsInsideATexel) {
     return between && line_distance(a, b, p) >= 0 ? kPositive : kNegative;
   });
   const BakedCrease baked = test::bake(map, test::curves_of({{a, b}}));
-  const Expectation e{[&](const Vec2& p) { return along(p) > 3.0 && along(p) < length - 3.0 ? line_distance(a, b, p) : 0.0; },
-                      [&](const Vec2& p) {
-                        return along(p) > 3.0 && along(p) < length - 3.0 ? std::abs(line_distance(a, b, p)) : -1.0;
-                      }};
+  const Expectation e{
+      [&](const Vec2& p) { return along(p) > 3.0 && along(p) < length - 3.0 ? line_distance(a, b, p) : 0.0; },
+      [&](const Vec2& p) {
+        return along(p) > 3.0 && along(p) < length - 3.0 ? std::abs(line_distance(a, b, p)) : -1.0;
+      }};
   EXPECT_GT(expect_sides_and_distances(baked, 12, 9, e, 2 * kCrossingClamp, 2 * kCrossingClamp), 10000u);
   for (double y = 0.0; y <= 9.0; y += 0.05)
     for (double x = 0.0; x <= 12.0; x += 0.05) {
@@ -127,9 +128,9 @@ TEST(HardCases, CreaseTwoCreasesCloserThanATexel) {
     return (p - (am + t * (bm - am))).norm();
   };
   const NormalMap map = test::map_from(12, 9, [&](const Vec2& p) {
-    if (line_distance(a1, b1, p) < 0) return kNegative;  // above the first crease
+    if (line_distance(a1, b1, p) < 0) return kNegative;   // above the first crease
     if (line_distance(a2, b2, p) >= 0) return kPositive;  // below the second
-    return Vec3(0.0, -0.6, 0.8);                           // between: held by no sample
+    return Vec3(0.0, -0.6, 0.8);                          // between: held by no sample
   });
   const BakedCrease baked = test::bake(map, test::curves_of({{a1, b1}, {a2, b2}}));
   EXPECT_GT(baked.simplify.merged_edges, 0u);
