@@ -11,36 +11,18 @@
 
 #include "formats/asset.h"
 #include "formats/mip_levels.h"
-#include "formats/validate.h"
 #include "libbake/core/sh_basis.h"
-#include "libbake/filter/sh_asset.h"
-#include "libbake/filter/vmf_asset.h"
 #include "libbake/image/image_io.h"
 #include "tests/filter/filter_test_maps.h"
+#include "tests/hard_cases/filter_assets.h"
 #include "tests/hard_cases/hard_case_checks.h"
 #include "tests/scratch_dir.h"
 
 namespace mbk {
 namespace {
 
-Asset parse_valid(const std::vector<uint8_t>& bytes) {
-  for (const Finding& f : validate_asset(bytes)) ADD_FAILURE() << f.id << ": " << f.message;
-  return Asset::parse(bytes, "hard case");
-}
-
-Asset bake_sh(const NormalMap& map, int order, ShPrecision precision) {
-  const ShBakeOptions options{order, precision, ShWindow::none};
-  return parse_valid(
-      sh_asset_writer(test::loaded_map(map), build_sh_pyramid(map, order, Progress::silent()), options).serialize());
-}
-
-Asset bake_vmf(const NormalMap& map, int lobes, double align) {
-  VmfBakeOptions options{lobes, {}};
-  options.em.align = align;
-  return parse_valid(vmf_asset_writer(test::loaded_map(map), nullptr,
-                                      build_vmf_pyramid(map, nullptr, options, Progress::silent()), options)
-                         .serialize());
-}
+using test::bake_sh;
+using test::bake_vmf;
 
 // Every stored SH coefficient of every level against sum_i w_i Y_lm(n_i) computed independently. Tolerance: the
 // storage's rounding (f16: half an ulp of an 11-bit significand; f32: 1e-6 relative) plus 2e-6 of accumulation.
