@@ -4,8 +4,9 @@
 // and of 10^6 texels: the traversal must equal the brute-force sum over every texel, the P-NDF must integrate to 1
 // up to its truncation, and the aggregated traversal must stay within its documented bound.
 // (A footprint holding no texel centre: GlintPndf.FootprintWithoutTexelCentreIsZeroAndHasNoSample; the LUT's atom
-// at every table size: StandardizationLut.AtomIsExactWhateverTheSize and KnotsWithinOneStepOfTheExactTransform_AtomMaps;
-// constant and two-valued maps: StandardizationLut.ConstantAndTwoValuedChannels.)
+// at every table size: StandardizationLut.AtomIsExactWhateverTheSize and
+// KnotsWithinOneStepOfTheExactTransform_AtomMaps; constant and two-valued maps:
+// StandardizationLut.ConstantAndTwoValuedChannels.)
 #include <gtest/gtest.h>
 
 #include <cmath>
