@@ -29,7 +29,10 @@ ShLevel level_from_normals(const NormalMap& map, const ShBasisEvaluator& basis, 
     std::vector<double> sum(size_t(w) * size_t(count), 0.0), y(static_cast<size_t>(count));
     for (const MipWeight& fy : wy[size_t(row)])
       for (uint32_t x = 0; x < map.width; ++x) {
-        basis.evaluate(map.at(x, fy.index).cast<double>(), y);
+        // Normalised in double: a float normal's length is 1 only to ~6e-8, and the basis takes cos(theta) = z,
+        // whose error the Legendre recurrence multiplies by ~l^2 near the poles (test:
+        // HardCases.ShOrder128NearThePoleFromFloatNormals).
+        basis.evaluate(map.at(x, fy.index).cast<double>().normalized(), y);
         for (const auto& [i, weight] : columns[x]) {
           double* s = &sum[size_t(i) * size_t(count)];
           const double f = fy.weight * weight;
