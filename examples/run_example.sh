@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The built-in example: generates the demo scene's normal maps, bakes the assets its effects need, renders
-# it with the reference shader evaluator and with the brute-force reference, and compares the two.
+# it with the reference shader evaluator and with the brute-force reference, compares the two, and renders
+# brute force at 2 x 2 rays per pixel as the yardstick the filtered render has to beat.
 #
 #   examples/run_example.sh [MICROBAKE [OUT_DIR]]
 #
@@ -42,9 +43,14 @@ echo "== comparing the render with the reference"
 "$exe" compare "$out/demo.exr" "$out/demo_reference.exr"
 "$exe" compare "$out/demo.exr" "$out/demo_reference.exr" --format json > "$out/compare.json"
 
+echo "== the yardstick: brute force at 2 x 2 rays per pixel (same sample count), against the same reference"
+"$exe" render "$scene" --reference 2 --seed 1 -o "$out/demo_brute_force_2x2.exr"
+"$exe" compare "$out/demo_brute_force_2x2.exr" "$out/demo_reference.exr" | grep -E '^(rmse|block_l1)'
+
 echo
 echo "outputs in $out:"
 echo "  assets/              baked assets (.mbk; inspect with '$exe info FILE')"
 echo "  demo.png, demo.exr   the render (PNG tone-mapped for viewing, EXR linear)"
 echo "  demo_reference.*     the brute-force reference"
 echo "  compare.json         error metrics of the render against the reference"
+echo "  demo_brute_force_2x2.exr  brute force at 2 x 2 rays: compare its time and RMSE with the render's"
