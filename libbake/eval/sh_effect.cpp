@@ -9,8 +9,10 @@
 #include "formats/asset.h"
 #include "formats/error.h"
 #include "libbake/core/gauss_legendre.h"
+#include "libbake/core/vmf_lobe.h"
 #include "libbake/eval/filtered_ndf_shading.h"
 #include "libbake/eval/filtered_ndf_textures.h"
+#include "libbake/eval/sh_lobe_tail.h"
 
 namespace mbk {
 namespace {
@@ -49,6 +51,8 @@ class ShNdfShader : public MaterialShader {
         basis_(texture_->order()),
         rhat_diffuse_(lambertian_rhat(texture_->order())),
         rhat_specular_(microfacet_rhat(Brdf::of(material).lobe, texture_->order())),
+        unwindowed_(size_t(texture_->order()) + 1, 1.0),
+        tail_(Brdf::of(material).lobe, texture_->order()),
         rule_(degree4_rule()) {}
 
   Vec3 radiance(const ShadingContext& c, const Brdf& brdf) const override {
@@ -78,11 +82,17 @@ class ShNdfShader : public MaterialShader {
     spread.lobe.alpha =
         clamp_filtered_alpha(brdf.lobe.alpha, toksvig_beckmann_alpha(brdf.lobe.alpha, std::min(1.0, len)));
 
+    // D: the stored bands, unwindowed, plus the bands beyond the order completed from the vMF lobe of the mean
+    // normal (sh_lobe_tail.h), so a sharp NDF under a narrow lobe neither rings nor smears.
+    const double kappa = vmf_kappa_from_mean_length(std::min(1.0, len), INFINITY);
+    const Vec3 mu = len > 1e-6 ? Vec3(mean / len) : Vec3::UnitZ();
     Vec3 out = Vec3::Zero();
     for_each_direct_light(*c.lighting, c.position, f.N, [&](const Vec3& l, const Vec3& e, double) {
       const double diffuse = std::max(0.0, sh_filtered_brdf(basis_, g, window, rhat_diffuse_, to_tangent(l)));
       const Vec3 specular = evaluate_specular(spread, n, l, c.to_viewer, [&](const Vec3& h) {
-        return std::max(0.0, sh_filtered_brdf(basis_, g, window, rhat_specular_, to_tangent(h)));
+        const Vec3 h_tangent = to_tangent(h);
+        return std::max(0.0, sh_filtered_brdf(basis_, g, unwindowed_, rhat_specular_, h_tangent) +
+                                 tail_.value(h_tangent.dot(mu), kappa));
       });
       out += (brdf.albedo * (diffuse / kPi) + specular * n.dot(l)).cwiseProduct(e);
     });
@@ -105,6 +115,8 @@ class ShNdfShader : public MaterialShader {
   std::shared_ptr<const ShNdfTexture> texture_;
   ShBasisEvaluator basis_;
   std::vector<double> rhat_diffuse_, rhat_specular_;
+  std::vector<double> unwindowed_;  // the specular's stored bands are completed, not windowed
+  ShLobeTail tail_;
   SphereRule rule_;
 };
 
