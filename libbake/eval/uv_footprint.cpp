@@ -61,7 +61,7 @@ FootprintProbes footprint_probes(const Vec2& uv, const UvFootprint& f, uint32_t 
   const int cap = std::clamp(f.max_probes, 1, kMaxFootprintProbes);
   const double ratio = s2 > 0.0 ? s1 / s2 : double(cap);
   const int n = int(std::min({double(cap), std::ceil(ratio - 1e-9), std::ceil(s1)}));
-  const double lod = std::clamp(std::log2(std::max(s2, s1 / n)), 0.0, kMaxLod);
+  const double lod = std::clamp(std::log2(std::max(s2, s1 / n)) - kLodOfBoxVariance, 0.0, kMaxLod);
   if (n == 1) {
     probes.push_back({uv, lod});
     return probes;

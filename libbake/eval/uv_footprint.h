@@ -13,11 +13,15 @@
 // A lookup at the minor axis's level would be too sharp and one at the major axis's too blurred, so the
 // footprint is covered, as GPU anisotropic filtering does (EXT_texture_filter_anisotropic), by N probes
 //     N = min(max_probes, ceil(s1 / s2), ceil(s1)),   probe i at uv + ((i + 1/2) / N - 1/2) s1 u1 / (W, H),
-// each a trilinear lookup at lod = log2(max(s2, s1 / N)), clamped at 0 (magnification), equally weighted (a
-// box pixel: the reference's pixel filter), u1 the major axis's unit direction in texels. A circle (or
-// max_probes = 1) gives one probe at lod log2(s1), the isotropic rule when the columns are orthogonal and
-// equally long. A footprint that is infinite (grazing rays) gives one probe at kMaxLod, which every pyramid
-// clamps to its coarsest level.
+// each a trilinear lookup of width w = max(s2, s1 / N) texels, equally weighted (a box pixel: the reference's
+// pixel filter), u1 the major axis's unit direction in texels. The level for width w matches second moments:
+// a level-k texel is the box mean of 2^k texels and the bilinear lookup adds a tent of half-width 2^k, a kernel
+// of variance 4^k (1/12 + 1/6) = 4^k / 4 per axis, while the box of width w has w^2 / 12; equal for
+//     lod = log2(w) - log2(sqrt(3))   (kLodOfBoxVariance = 0.79),
+// clamped at 0 (magnification). (lod = log2(w), the OpenGL rule, filters twice the box's variance: at ~5 texels
+// per pixel that alone doubled the filtered effects' error on the filtering report's middle sphere.) A circle (or
+// max_probes = 1) gives one probe of width s1. A footprint that is infinite (grazing rays) gives one probe at kMaxLod,
+// which every pyramid clamps to its coarsest level.
 #pragma once
 
 #include <array>
@@ -40,6 +44,7 @@ struct UvFootprint {
 };
 
 inline constexpr double kMaxLod = 64.0;
+inline constexpr double kLodOfBoxVariance = 0.79248125036057812;  // log2(sqrt(3)), see above
 inline constexpr int kMaxFootprintProbes = 64;
 
 // One trilinear lookup of an anisotropic footprint: where, and at which level of detail.

@@ -20,12 +20,14 @@ double zonal_series(const std::vector<double>& rhat, const std::vector<double>& 
   std::vector<double> y(size_t(order) + 1);
   zonal_harmonics(order, t, y);  // Y_l0(t) = sqrt((2l + 1) / (4 pi)) P_l(t)
   double sum = 0.0;
-  for (int l = 0; l <= order; ++l) sum += rhat[size_t(l)] * lambda[size_t(l)] * std::sqrt((2 * l + 1) / (4 * std::numbers::pi)) * y[size_t(l)];
+  for (int l = 0; l <= order; ++l)
+    sum += rhat[size_t(l)] * lambda[size_t(l)] * std::sqrt((2 * l + 1) / (4 * std::numbers::pi)) * y[size_t(l)];
   return sum;
 }
 
 TEST(ShLobeTail, OneNormalGivesTheClosedFormLobe) {
-  for (const MicrofacetLobe lobe : {MicrofacetLobe{Distribution::ggx, 0.1}, MicrofacetLobe{Distribution::beckmann, 0.3}})
+  for (const MicrofacetLobe lobe :
+       {MicrofacetLobe{Distribution::ggx, 0.1}, MicrofacetLobe{Distribution::beckmann, 0.3}})
     for (const int order : {0, 2, 8, 16}) {
       const ShLobeTail tail(lobe, order);
       const std::vector<double> rhat = microfacet_rhat(lobe, order);
