@@ -48,7 +48,8 @@ bool whole_number(std::string_view text, uint64_t& value) {
 }
 
 std::string integer_error(const Parameter& p, uint64_t v) {
-  if (double(v) < p.min || double(v) > p.max) return "is outside [" + short_number(p.min) + ", " + short_number(p.max) + "]";
+  if (double(v) < p.min || double(v) > p.max)
+    return "is outside [" + short_number(p.min) + ", " + short_number(p.max) + "]";
   if (!p.allowed.empty() && std::find(p.allowed.begin(), p.allowed.end(), v) == p.allowed.end())
     return "is not one of " + joined(allowed_texts(p), ", ");
   if (p.power_of_two && !std::has_single_bit(v)) return "is not a power of two";
@@ -122,7 +123,8 @@ std::string parameter_value_error(const Parameter& p, const nlohmann::json& valu
         return "value " + text + " is outside [" + short_number(p.min) + ", " + short_number(p.max) + "]";
       return "";
     case ParameterType::choice:
-      if (!value.is_string() || std::find(p.choices.begin(), p.choices.end(), value.get<std::string>()) == p.choices.end())
+      if (!value.is_string() ||
+          std::find(p.choices.begin(), p.choices.end(), value.get<std::string>()) == p.choices.end())
         return "unknown value " + text + " (expected one of: " + joined(p.choices, ", ") + ")";
       return "";
     case ParameterType::size2:

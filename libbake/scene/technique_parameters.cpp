@@ -53,9 +53,9 @@ std::vector<TechniqueSchema> declare_schemas() {
   patch.power_of_two = true;
   Parameter bits = integer("bits", 8, 16, 16, "Bits per stored bound: 16 (8 bytes per entry) or 8 (4 bytes)");
   bits.allowed = {8, 16};
-  Parameter table_size = integer("table_size", kColormapMinSide, kColormapMaxSide,
-                                 {kColormapDefaultSide, kColormapDefaultSide},
-                                 "Table size: W mean samples x H standard-deviation samples");
+  Parameter table_size =
+      integer("table_size", kColormapMinSide, kColormapMaxSide, {kColormapDefaultSide, kColormapDefaultSide},
+              "Table size: W mean samples x H standard-deviation samples");
   table_size.type = ParameterType::size2;
   table_size.option = "--size";
   Parameter level = integer("level", 0, 40, nullptr,
@@ -101,8 +101,9 @@ std::vector<TechniqueSchema> declare_schemas() {
        {command_line_only(integer("channel", 0, kAnyUint32, 0, "Image channel holding f (0 = the first; scenes: 0)"))}},
       {"graph",
        {command_line_only(integer("candidates", 1, 16, 2, "k-coherence candidates per stack texel, K (the thesis: 2)")),
-        command_line_only(integer("pca_components", 1, 100, 8,
-                                  "Principal components of the 5 x 5 neighbourhoods the candidate search matches in"))}},
+        command_line_only(
+            integer("pca_components", 1, 100, 8,
+                    "Principal components of the 5 x 5 neighbourhoods the candidate search matches in"))}},
       {"synth",
        {level, command_line_only(integer("seed", 0, kAnyUint32, 1, "Jitter hash seed")),
         command_line_only(integer("passes", 1, 8, 2, "Correction passes per level (4 sub-passes each)"))}},

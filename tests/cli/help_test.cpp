@@ -90,13 +90,15 @@ TEST(Help, EveryExampleWorks) {
   // The examples' inputs: colour maps, graphs and scenes (not the result pictures).
   fs::create_directories(dir / "examples");
   for (const char* folder : {"colormaps", "graphs", "scenes"})
-    fs::copy(fs::path(MICROBAKE_SOURCE_DIR) / "examples" / folder, dir / "examples" / folder, fs::copy_options::recursive);
+    fs::copy(fs::path(MICROBAKE_SOURCE_DIR) / "examples" / folder, dir / "examples" / folder,
+             fs::copy_options::recursive);
   fs::copy(fs::path(MICROBAKE_SOURCE_DIR) / "examples" / "make_synth_exemplars.sh", dir / "examples");
   // The exemplars examples/graphs/chain.json names.
   ASSERT_EQ(run("MICROBAKE=" + exe() + " bash examples/make_synth_exemplars.sh", dir.path()).exit_code, 0);
   // Each command after the ones that make its inputs.
-  const std::vector<std::string> order = {"gen",   "mip",   "lut",  "rmq",    "sh",      "vmf",  "crease",  "colormap",
-                                          "moments", "graph", "synth", "bake", "render", "compare", "info", "validate"};
+  const std::vector<std::string> order = {"gen",    "mip",      "lut",     "rmq",     "sh",    "vmf",
+                                          "crease", "colormap", "moments", "graph",   "synth", "bake",
+                                          "render", "compare",  "info",    "validate"};
   const std::vector<std::string> names = commands(dir.path());
   EXPECT_EQ(std::set<std::string>(order.begin(), order.end()), std::set<std::string>(names.begin(), names.end()));
   for (const std::string& name : order)

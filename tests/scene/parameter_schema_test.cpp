@@ -187,7 +187,7 @@ std::vector<std::string> outside_texts(const Parameter& p) {
   for (const json& v : outside(p)) {
     char exact[40];
     std::snprintf(exact, sizeof exact, "%.17g", v.is_number() ? v.get<double>() : 0.0);
-    texts.push_back(p.type == ParameterType::size2  ? v[0].dump() + "x" + v[1].dump()
+    texts.push_back(p.type == ParameterType::size2    ? v[0].dump() + "x" + v[1].dump()
                     : p.type == ParameterType::number ? std::string(exact)
                                                       : parameter_value_text(p, v));
   }
@@ -214,7 +214,8 @@ TEST(ParameterSchema, EveryTechniqueParameterIsItsCommandsOptionWithTheSameValue
         const test::CliRun r =
             test::run_cli(t.technique + required_arguments(t.technique, p.option) + " " + p.option + " " + text, dir);
         EXPECT_EQ(r.exit_code, 1) << what << " " << text << ": " << r.err;
-        EXPECT_NE(r.err.find(p.option + ": '" + text + "' is not"), std::string::npos) << what << " " << text << ": " << r.err;
+        EXPECT_NE(r.err.find(p.option + ": '" + text + "' is not"), std::string::npos)
+            << what << " " << text << ": " << r.err;
       }
     }
   }
