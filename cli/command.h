@@ -6,6 +6,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -25,6 +26,7 @@ struct CommandEntry {
   std::string name;
   std::string summary;
   std::function<std::unique_ptr<Command>()> make;
+  std::vector<std::string> examples;  // one or two real command lines, shown at the end of its help
 };
 
 // One factory per command file.

@@ -1,4 +1,4 @@
-// `microbake bake SCENE.json [--out-dir DIR]`: bakes exactly the assets the scene's effects call for, each
+// `microbake bake SCENE [--out-dir DIR]`: bakes exactly the assets the scene's effects call for, each
 // once even when several materials share it (libbake/scene/bake_plan.h), into the asset folder (default
 // <scene folder>/<scene stem>.assets, where `render` looks). An existing file that records the same input
 // content hashes, conventions, repair policy and parameters is skipped; any other is rebuilt
@@ -24,9 +24,10 @@ std::string uses_text(const PlannedAsset& a) {
 class BakeCommand : public Command {
  public:
   void add_options(CLI::App& app) override {
-    app.add_option("scene", options_.scene, "Scene file (JSON)")->required();
+    app.add_option("SCENE", options_.scene, "Scene file (JSON)")->required();
     app.add_option("--out-dir", options_.out_dir,
-                   "Asset folder (default: <scene folder>/<scene stem>.assets, where 'render' looks)");
+                   "Asset folder (default: <scene folder>/<scene stem>.assets, where 'render' looks)")
+        ->type_name("DIR");
     add_format_option(app, options_.format);
     add_run_options(app, options_.run);
   }

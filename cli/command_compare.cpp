@@ -1,13 +1,15 @@
-// `microbake compare A B [--format text|json] [--max-rmse X] [--block N]`: error metrics of image A against the
-// reference B (libbake/eval/image_difference.h: RMSE, relative MSE, PSNR with peak 1, relative L1 of block means). Exit
-// 6 when
+// `microbake compare IMAGE REFERENCE [--format text|json] [--max-rmse X] [--block N]`: error metrics of IMAGE against
+// the REFERENCE (libbake/eval/image_difference.h: RMSE, relative MSE, PSNR with peak 1, relative L1 of block means).
+// Exit 6 when
 // --max-rmse is given and the RMSE is above it; images of different sizes are invalid input (3).
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 
 #include "cli/command.h"
 #include "cli/common_options.h"
+#include "cli/parameter_options.h"
 #include "formats/error.h"
 #include "libbake/eval/image_difference.h"
 #include "libbake/image/image_io.h"
@@ -19,15 +21,24 @@ namespace {
 class CompareCommand : public Command {
  public:
   void add_options(CLI::App& app) override {
-    app.add_option("a", options_.a, "Image to assess (any format OpenImageIO reads)")->required();
-    app.add_option("b", options_.b, "Reference image, same size and channels")->required();
+    app.add_option("IMAGE", options_.a, "Image to assess (any format OpenImageIO reads)")->required();
+    app.add_option("REFERENCE", options_.b, "Reference image, same size and channels")->required();
     add_format_option(app, options_.format);
-    app.add_option("--max-rmse", options_.max_rmse, "Exit 6 when the RMSE is above this")->check(finite_number(0.0));
-    app.add_option("--block", options_.block,
-                   "Side in pixels of the blocks of the block_relative_l1 metric (sum |block mean A - block mean B| "
-                   "/ sum |block mean B|)")
-        ->check(CLI::Range(1u, 65536u))
-        ->default_val(8u);
+    Parameter max_rmse;
+    max_rmse.option = "--max-rmse";
+    max_rmse.type = ParameterType::number;
+    max_rmse.max = std::numeric_limits<double>::max();
+    max_rmse.doc = "Exit 6 when the RMSE is above this";
+    add_parameter_option(app, max_rmse, options_.max_rmse);
+    Parameter block;
+    block.option = "--block";
+    block.min = 1;
+    block.max = 65536;
+    block.default_value = 8;
+    block.doc =
+        "Side in pixels of the blocks of the block_relative_l1 metric (sum |block mean IMAGE - block mean REFERENCE| / "
+        "sum |block mean REFERENCE|)";
+    add_parameter_option(app, block, options_.block);
   }
 
   int run() override {

@@ -7,6 +7,7 @@
 
 #include "cli/command.h"
 #include "cli/common_options.h"
+#include "cli/parameter_options.h"
 #include "formats/error.h"
 #include "formats/file_extension.h"
 #include "libbake/crease/curve_set.h"
@@ -41,12 +42,20 @@ class GenCommand : public Command {
     std::string kinds = "What to generate: " + generator_names();
     for (const GeneratorKind& k : generator_kinds())
       kinds += "\n  " + std::string(k.name) + ": " + std::string(k.summary);
-    app.add_option("kind", options_.kind, kinds)->required();
+    app.add_option("KIND", options_.kind, kinds)->required();
     add_output_option(app, options_.output, "normal map (.png: 16-bit, .exr: 32-bit float)");
-    app.add_option("--size", options_.size, "Size in texels: N (square) or WxH")->default_val("512");
-    app.add_option("--seed", options_.seed, "Random seed (any 32-bit unsigned integer)")->default_val(1);
+    app.add_option("--size", options_.size, "Size in texels: N (square) or WxH")
+        ->type_name("N|WxH")
+        ->default_val("512");
+    Parameter seed;
+    seed.option = "--seed";
+    seed.max = 4294967295.0;
+    seed.default_value = 1;
+    seed.doc = "Random seed";
+    add_parameter_option(app, seed, options_.seed);
     app.add_option("--creases", options_.creases.path,
-                   "panels only: also write the exact crease lines as a curves file (.json) for `microbake crease`");
+                   "panels only: also write the exact crease lines as a curves file (.json) for `microbake crease`")
+        ->type_name("FILE");
     add_run_options(app, options_.run);
   }
 

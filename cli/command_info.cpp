@@ -40,7 +40,7 @@ std::string convention_line(const nlohmann::json& in) {
 class InfoCommand : public Command {
  public:
   void add_options(CLI::App& app) override {
-    app.add_option("file", options_.file, "Asset (.mbk) to describe")->required();
+    app.add_option("FILE", options_.file, "Asset (.mbk) to describe")->required();
     add_format_option(app, options_.format);
   }
 

@@ -1,12 +1,13 @@
-// `microbake render SCENE.json -o OUT.{exr,png} [--spp N] [--max-probes N] [--reference N] [--seed S]
-// [--assets DIR]`: the reference shader evaluator (libbake/eval/renderer.h). EXR output is linear radiance, PNG is
-// tone-mapped for viewing (libbake/eval/render_output.h). Effects read their baked assets from the asset folder
-// (default <scene folder>/<scene stem>.assets, as `bake` writes it); --reference needs no assets.
+// `microbake render SCENE -o OUT.{exr,png} [--spp N] [--max-probes N] [--reference N] [--seed S] [--assets DIR]`:
+// the reference shader evaluator (libbake/eval/renderer.h). EXR output is linear radiance, PNG is tone-mapped for
+// viewing (libbake/eval/render_output.h). Effects read their baked assets from the asset folder (default
+// <scene folder>/<scene stem>.assets, as `bake` writes it); --reference needs no assets.
 #include <chrono>
 #include <cstdio>
 
 #include "cli/command.h"
 #include "cli/common_options.h"
+#include "cli/parameter_options.h"
 #include "formats/error.h"
 #include "libbake/eval/render_output.h"
 #include "libbake/eval/renderer.h"
@@ -18,27 +19,42 @@ namespace {
 class RenderCommand : public Command {
  public:
   void add_options(CLI::App& app) override {
-    app.add_option("scene", options_.scene, "Scene file (JSON)")->required();
+    app.add_option("SCENE", options_.scene, "Scene file (JSON)")->required();
     add_output_option(app, options_.output, "rendered image (.exr: linear float; .png: clamped, sRGB-encoded 8-bit)");
-    spp_option_ = app.add_option("--spp", options_.spp, "Samples per pixel, stratified (render mode)")
-                      ->check(CLI::Range(1u, 65536u))
-                      ->default_val(1u);
-    app.add_option(
-           "--reference", options_.reference,
-           "Ground truth instead: N x N sub-pixel rays per pixel with unfiltered normals from the raw maps (no assets)")
-        ->check(CLI::Range(1u, 256u));
-    app.add_option("--seed", options_.seed,
-                   "Seed of the reference's sub-pixel jitter: two references with different seeds measure its own "
-                   "noise floor (render mode samples each cell's centre)")
-        ->check(CLI::Range(0u, 4294967295u))
-        ->default_val(0u);
-    app.add_option("--max-probes", options_.max_probes,
-                   "Anisotropic filtering: at most this many probes along a footprint's major axis per filtered "
-                   "lookup (render mode; 1 = isotropic)")
-        ->check(CLI::Range(1, kMaxFootprintProbes))
-        ->default_val(options_.max_probes);
+    Parameter spp;
+    spp.option = "--spp";
+    spp.min = 1;
+    spp.max = 65536;
+    spp.default_value = 1;
+    spp.doc = "Samples per pixel, stratified (render mode)";
+    spp_option_ = add_parameter_option(app, spp, options_.spp);
+    Parameter reference;
+    reference.option = "--reference";
+    reference.min = 1;
+    reference.max = 256;
+    reference.doc =
+        "Ground truth instead: N x N sub-pixel rays per pixel with unfiltered normals from the raw maps (no assets)";
+    add_parameter_option(app, reference, options_.reference);
+    Parameter seed;
+    seed.option = "--seed";
+    seed.max = 4294967295.0;
+    seed.default_value = 0;
+    seed.doc =
+        "Seed of the reference's sub-pixel jitter: two references with different seeds measure its own noise floor "
+        "(render mode samples each cell's centre)";
+    add_parameter_option(app, seed, options_.seed);
+    Parameter max_probes;
+    max_probes.option = "--max-probes";
+    max_probes.min = 1;
+    max_probes.max = kMaxFootprintProbes;
+    max_probes.default_value = options_.max_probes;
+    max_probes.doc =
+        "Anisotropic filtering: at most this many probes along a footprint's major axis per filtered lookup (render "
+        "mode; 1 = isotropic)";
+    add_parameter_option(app, max_probes, options_.max_probes);
     app.add_option("--assets", options_.assets,
-                   "Folder of baked assets (default: <scene folder>/<scene stem>.assets, as 'bake' writes)");
+                   "Folder of baked assets (default: <scene folder>/<scene stem>.assets, as 'bake' writes)")
+        ->type_name("DIR");
     add_run_options(app, options_.run);
   }
 

@@ -1,18 +1,15 @@
-// `microbake synth GRAPH.mbk -o OUT.{exr,png} --level T --window X,Y,W,H [--seed S] [--jitter R,...] [--passes N]
+// `microbake synth INPUT -o OUT.{exr,png} --level T --window X,Y,W,H [--seed S] [--jitter R,...] [--passes N]
 // [--no-correction]`: synthesizes a window of a multiscale texture from an analysed exemplar graph ([Han08] thesis
 // Sec. 5.2.2; libbake/synth/multiscale_synthesis.h). Deterministic: a window synthesized alone has the same pixels
 // as the same region of a larger window, whatever the thread count.
 #include <cctype>
 #include <cmath>
 #include <iomanip>
-#include <iostream>
 #include <sstream>
 
-#include "cli/command.h"
-#include "cli/common_options.h"
-#include "cli/stage_timer.h"
+#include "cli/baking_command.h"
 #include "formats/asset.h"
-#include "formats/file_extension.h"
+#include "formats/error.h"
 #include "libbake/image/normal_map_encoding.h"
 #include "libbake/synth/multiscale_synthesis.h"
 
@@ -42,85 +39,79 @@ std::vector<double> comma_separated(const std::string& text, const std::string& 
   return values;
 }
 
-class SynthCommand : public Command {
+class SynthCommand : public BakingCommand {
  public:
-  void add_options(CLI::App& app) override {
-    app.add_option("GRAPH", options_.graph, "Analysed exemplar graph (.mbk from `microbake graph`)")->required();
-    add_output_option(app, options_.output, "the synthesized window (.exr float, or .png 16-bit)");
-    app.add_option(
-           "--level", options_.synthesis.level,
-           "Synthesis level T (0..40): a texel of the root's coarsest stack level is 2^T pixels wide there, a texel "
-           "of the root itself 2^(T - L)")
+  SynthCommand() : BakingCommand("synth", "synthesized window (.exr float, or .png 16-bit)") {}
+
+ private:
+  void add_inputs(CLI::App& app) override {
+    app.add_option("INPUT", path_, "Analysed exemplar graph (.mbk from `microbake graph`)")->required();
+    app.add_option("--window", window_, "The window's origin and size in pixels of level T")
+        ->type_name("X,Y,W,H")
         ->required();
-    app.add_option("--window", options_.window, "X,Y,W,H: the window's origin and size in pixels of level T")
-        ->required();
-    app.add_option("--seed", options_.synthesis.seed, "Jitter hash seed")->default_val(1u);
-    app.add_option("--jitter", options_.jitter,
+    app.add_option("--jitter", jitter_,
                    "Per-level randomness r_t in [0, 1], comma-separated from level 0; the last value repeats")
+        ->type_name("R0,R1,...")
         ->default_val("1,0.6,0.4,0.3");
-    app.add_option("--passes", options_.synthesis.passes, "Correction passes per level (4 sub-passes each)")
-        ->check(CLI::Range(1u, 8u))
-        ->default_val(2u);
-    app.add_flag("--no-correction", options_.no_correction,
+    app.add_flag("--no-correction", no_correction_,
                  "Ignore the transfer functions (inconsistency correction, Sec. 5.3), to compare");
-    add_run_options(app, options_.run);
   }
 
-  void check() override {
-    const std::string ext = lower_extension(options_.output.path);
-    if (ext != ".png" && ext != ".exr")
-      throw Error(ExitCode::bad_command_line, "synth writes .png (16-bit) or .exr (float) files, not '" + ext + "'",
-                  options_.output.path);
-    options_.output.check_writable();
-    const std::vector<double> w = comma_separated(options_.window, "--window", "an integer",
+  std::vector<std::string> output_extensions() const override { return {".png", ".exr"}; }
+
+  void check_inputs() override {
+    const std::vector<double> w = comma_separated(window_, "--window", "an integer",
                                                   [](double v) { return v == std::floor(v) && std::abs(v) <= 0x1p62; });
     if (w.size() != 4 || w[2] < 1 || w[3] < 1 || w[2] > 65536 || w[3] > 65536)
       throw Error(ExitCode::bad_command_line, "--window must be X,Y,W,H with 1 <= W, H <= 65536", "--window");
-    options_.synthesis.x = int64_t(w[0]);
-    options_.synthesis.y = int64_t(w[1]);
-    options_.synthesis.width = uint32_t(w[2]);
-    options_.synthesis.height = uint32_t(w[3]);
-    options_.synthesis.jitter = comma_separated(options_.jitter, "--jitter", "a number in [0, 1]",
-                                                [](double v) { return v >= 0.0 && v <= 1.0; });
-    options_.synthesis.correct_inconsistency = !options_.no_correction;
+    synthesis_.x = int64_t(w[0]);
+    synthesis_.y = int64_t(w[1]);
+    synthesis_.width = uint32_t(w[2]);
+    synthesis_.height = uint32_t(w[3]);
+    synthesis_.jitter =
+        comma_separated(jitter_, "--jitter", "a number in [0, 1]", [](double v) { return v >= 0.0 && v <= 1.0; });
+    synthesis_.correct_inconsistency = !no_correction_;
+    synthesis_.level = parameters().at("level");
+    synthesis_.seed = parameters().at("seed");
+    synthesis_.passes = parameters().at("passes");
   }
 
-  int run() override {
-    options_.run.apply();
-    Progress progress(options_.run.progress_mode());
-    StageTimer timer;
-    const GraphTables graph = read_graph_tables(Asset::open(options_.graph));
-    const double load_seconds = timer.lap();
-    const Image window = synthesize_window(graph, options_.synthesis, progress);
-    const double synth_seconds = timer.lap();
-    options_.output.write_with([&](const std::filesystem::path& temporary) {
-      if (!graph.layout.normal_map) return save_image(temporary, window, {}, options_.output.path);
+  void load() override { graph_ = read_graph_tables(Asset::open(path_)); }
+
+  void bake(Progress& progress) override { window_image_ = synthesize_window(graph_, synthesis_, progress); }
+
+  void write(const OutputOption& output) const override {
+    output.write_with([&](const std::filesystem::path& temporary) {
+      if (!graph_.layout.normal_map) return save_image(temporary, window_image_, {}, output.path);
       NormalMap map;  // encoded as every baker reads normal maps back (16-bit PNG (n + 1) / 2, float EXR n)
-      map.width = window.width;
-      map.height = window.height;
-      for (size_t i = 0; i < window.pixels.size(); i += 3)
-        map.texels.push_back(Vec3f(window.pixels[i], window.pixels[i + 1], window.pixels[i + 2]));
-      save_normal_map(temporary, map, YConvention::plus_y, options_.output.path);
+      map.width = window_image_.width;
+      map.height = window_image_.height;
+      for (size_t i = 0; i < window_image_.pixels.size(); i += 3)
+        map.texels.push_back(Vec3f(window_image_.pixels[i], window_image_.pixels[i + 1], window_image_.pixels[i + 2]));
+      save_normal_map(temporary, map, YConvention::plus_y, output.path);
     });
-    const double write_seconds = timer.lap();
-    if (!options_.run.quiet)
-      std::cout << std::fixed << std::setprecision(3) << "synth: wrote " << options_.output.path << " (" << window.width
-                << "x" << window.height << " at level " << options_.synthesis.level << ", origin "
-                << options_.synthesis.x << "," << options_.synthesis.y << "); load " << load_seconds << " s, synthesis "
-                << synth_seconds << " s (" << std::setprecision(3)
-                << double(window.width) * window.height / 1e6 / std::max(synth_seconds, 1e-9)
-                << " megapixels/s), write " << write_seconds << " s\n";
-    return 0;
   }
 
- private:
-  struct Options {
-    std::string graph, window, jitter;
-    OutputOption output;
-    SynthesisOptions synthesis;
-    bool no_correction = false;
-    RunOptions run;
-  } options_;
+  std::string bake_stage() const override { return "synthesis"; }
+
+  std::string bake_rate(double seconds) const override {
+    std::ostringstream s;
+    s << std::setprecision(3) << " ("
+      << double(window_image_.width) * window_image_.height / 1e6 / std::max(seconds, 1e-9) << " megapixels/s)";
+    return s.str();
+  }
+
+  std::string summary() const override {
+    return std::to_string(window_image_.width) + "x" + std::to_string(window_image_.height) + " at level " +
+           std::to_string(synthesis_.level) + ", origin " + std::to_string(synthesis_.x) + "," +
+           std::to_string(synthesis_.y);
+  }
+
+  std::string path_, window_, jitter_;
+  bool no_correction_ = false;
+  SynthesisOptions synthesis_;
+  GraphTables graph_;
+  Image window_image_;
 };
 
 }  // namespace

@@ -16,7 +16,7 @@ namespace {
 class ValidateCommand : public Command {
  public:
   void add_options(CLI::App& app) override {
-    app.add_option("files", options_.files, "Assets (.mbk) to check")->required();
+    app.add_option("FILE", options_.files, "Assets (.mbk) to check")->required();
     add_format_option(app, options_.format);
     app.add_flag("--warnings-as-errors", options_.warnings_as_errors, "Treat warnings as errors");
   }

@@ -1,7 +1,8 @@
 // Shared options (see common_options.h).
 #include "cli/common_options.h"
 
-#include <cmath>
+#include "cli/parameter_options.h"
+
 #include <cstdio>
 #include <memory>
 #include <set>
@@ -35,44 +36,34 @@ void RunOptions::apply() const {
 }
 
 void add_run_options(CLI::App& app, RunOptions& o) {
-  app.add_option("--threads", o.threads, "Worker threads (0 = all cores); outputs do not depend on it")
-      ->check(CLI::Range(0, 1024))
-      ->default_val(0);
+  Parameter threads;
+  threads.option = "--threads";
+  threads.max = 1024;
+  threads.default_value = 0;
+  threads.doc = "Worker threads (0 = all cores); outputs do not depend on it";
+  add_parameter_option(app, threads, o.threads);
   app.add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
-  app.add_option("--progress", o.progress, "Progress bar on stderr: auto (only on a terminal), always, never")
-      ->check(CLI::IsMember({"auto", "always", "never"}))
-      ->default_val("auto");
-}
-
-CLI::Validator finite_number(double lo, double hi) {
-  auto short_form = [](double x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", x);
-    return std::string(text);
-  };
-  const std::string range = hi == std::numeric_limits<double>::max()
-                                ? "a finite number >= " + short_form(lo)
-                                : "a number in [" + short_form(lo) + ", " + short_form(hi) + "]";
-  return CLI::Validator(
-      [=](std::string& value) -> std::string {
-        double x = 0.0;
-        size_t used = 0;
-        try {
-          x = std::stod(value, &used);
-        } catch (const std::exception&) {
-          used = 0;
-        }
-        if (used == 0 || used != value.size() || !std::isfinite(x) || x < lo || x > hi)
-          return "'" + (value.size() > 40 ? value.substr(0, 37) + "..." : value) + "' is not " + range;
-        return {};
-      },
-      range, "finite number");
+  Parameter progress;
+  progress.option = "--progress";
+  progress.type = ParameterType::choice;
+  progress.choices = {"auto", "always", "never"};
+  progress.default_value = "auto";
+  progress.doc = "Progress bar on stderr: auto (only on a terminal), always, never";
+  add_parameter_option(app, progress, o.progress);
 }
 
 void add_format_option(CLI::App& app, OutputFormat& format) {
-  app.add_option("--format", format, "Report format: text or json")
-      ->transform(CLI::CheckedTransformer(
-          std::map<std::string, OutputFormat>{{"text", OutputFormat::text}, {"json", OutputFormat::json}}))
+  Parameter p;
+  p.option = "--format";
+  p.type = ParameterType::choice;
+  p.choices = {"text", "json"};
+  p.doc = "Report format";
+  app.add_option_function<std::string>(
+         p.option,
+         [&format](const std::string& name) { format = name == "json" ? OutputFormat::json : OutputFormat::text; },
+         p.doc)
+      ->transform(parameter_validator(p))
+      ->type_name(parameter_label(p))
       ->default_str("text");
 }
 
@@ -92,7 +83,9 @@ void OutputOption::require_extension(const std::string& extension) const {
 void OutputOption::write_asset(const AssetWriter& asset) const { asset.write(path); }
 
 void add_output_option(CLI::App& app, OutputOption& output, const std::string& what) {
-  app.add_option("-o,--output", output.path, "Write the " + what + " here (written whole or not at all)")->required();
+  app.add_option("-o,--output", output.path, "Write the " + what + " here (written whole or not at all)")
+      ->type_name("FILE")
+      ->required();
 }
 
 NormalMapLoadOptions NormalMapInput::load_options() const {
@@ -103,29 +96,17 @@ NormalMapLoadOptions NormalMapInput::load_options() const {
 }
 
 void add_normal_map_input(CLI::App& app, NormalMapInput& input) {
-  app.add_option("input", input.path, "Normal map (any image OpenImageIO reads: PNG, EXR, TGA, JPEG, TIFF)")
+  app.add_option("INPUT", input.path, "Normal map (any image OpenImageIO reads: PNG, EXR, TGA, JPEG, TIFF)")
       ->required();
   app.add_option("--convention", input.convention,
                  "Green channel convention of the input: auto (told from the curl of its slopes; read as +Y with a "
                  "warning when it cannot tell), +Y (OpenGL) or -Y (DirectX, warned about when the slopes say +Y); "
                  "any case")
+      ->type_name("auto|+Y|-Y")
       ->default_val("auto");
   app.add_flag(
       "--repair-invalid", input.repair_invalid,
       "Repair invalid texels instead of failing: NaN/Inf/zero -> (0,0,1), z < 0 -> z = 0 (recorded in metadata)");
-}
-
-void print_bake_times(std::ostream& out, const InputRecord& input, double load_seconds, double bake_seconds,
-                      double write_seconds) {
-  const uint64_t repaired = input.repaired_texels;
-  if (repaired) out << "; " << repaired << " invalid texel" << (repaired == 1 ? "" : "s") << " repaired";
-  out << "); load " << load_seconds << " s, bake " << bake_seconds << " s, write " << write_seconds << " s\n";
-}
-
-void check_asset_bake(const NormalMapInput& input, const OutputOption& output) {
-  (void)input.load_options();
-  output.require_extension(".mbk");
-  output.check_writable();
 }
 
 }  // namespace mbk::cli

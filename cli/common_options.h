@@ -6,7 +6,6 @@
 
 #include <filesystem>
 #include <functional>
-#include <limits>
 #include <ostream>
 #include <string>
 
@@ -29,10 +28,6 @@ struct RunOptions {
   void apply() const;
 };
 void add_run_options(CLI::App& app, RunOptions& options);
-
-// The check of every real-valued option: a finite number inside [lo, hi] (CLI11's own ranges let NaN through).
-// Bounds and values are printed in short form (%g), never as hundreds of digits.
-CLI::Validator finite_number(double lo, double hi = std::numeric_limits<double>::max());
 
 enum class OutputFormat { text, json };
 void add_format_option(CLI::App& app, OutputFormat& format);
@@ -59,16 +54,7 @@ struct NormalMapInput {
   bool repair_invalid = false;
   NormalMapLoadOptions load_options() const;
 };
-// The positional IN argument plus --convention (auto, the default, +Y or -Y) and --repair-invalid.
+// The positional INPUT argument plus --convention (auto, the default, +Y or -Y) and --repair-invalid.
 void add_normal_map_input(CLI::App& app, NormalMapInput& input);
-
-// The end of a baking command's summary line: "; N invalid texels repaired" when the loader repaired any,
-// then "); load L s, bake B s, write W s" and a newline.
-void print_bake_times(std::ostream& out, const InputRecord& input, double load_seconds, double bake_seconds,
-                      double write_seconds);
-
-// The checks of every command that bakes one .mbk asset from one normal map, before any work: a known
-// --convention, an output ending in .mbk, and an output folder that exists.
-void check_asset_bake(const NormalMapInput& input, const OutputOption& output);
 
 }  // namespace mbk::cli

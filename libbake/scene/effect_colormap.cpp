@@ -11,73 +11,105 @@
 #include "libbake/colormap/colormap_table.h"
 #include "libbake/colormap/moment_pyramid.h"
 #include "libbake/scene/effect_registry.h"
+#include "libbake/scene/technique_parameters.h"
 
 namespace mbk {
 namespace {
 
 enum class ColormapCase { texture, height, slope };
 
-// The options every case reads: the colour map, its table and the mode.
-void parse_common(JsonObjectReader& r, const std::filesystem::path& folder, EffectUse& use) {
-  nlohmann::json& o = use.options;
-  o["colormap"] = effect_file_option(r, "colormap", folder, use);
-  std::array<uint32_t, 2> size{kColormapDefaultSide, kColormapDefaultSide};
-  if (const auto* v = r.optional("table_size")) {
+Parameter declare(const std::string& name, ParameterType type, double lo, double hi, nlohmann::json fallback,
+                  const std::string& doc) {
+  Parameter p;
+  p.name = name;
+  p.type = type;
+  p.min = lo;
+  p.max = hi;
+  p.default_value = std::move(fallback);
+  p.doc = doc;
+  return p;
+}
+
+Parameter choice(const std::string& name, std::vector<std::string> choices, const std::string& doc) {
+  Parameter p = declare(name, ParameterType::choice, 0, 0, choices.back(), doc);
+  p.choices = std::move(choices);
+  return p;
+}
+
+// The keys of each case (README "Effects colormap, colormap-height, colormap-slope").
+std::vector<Parameter> colormap_parameters(ColormapCase which) {
+  std::vector<Parameter> p = {
+      declare("colormap", ParameterType::file, 0, 0, nullptr, "The colour map: a gradient image or JSON stops"),
+      effect_parameter("colormap", "table_size", "table_size"),
+      effect_parameter("colormap", "sigma_max", "sigma_max"),
+      choice("mode", {"naive", "filtered"}, "naive: C(mean), to compare; filtered: the table"),
+      choice("combine", {"linear", "product"}, "How this material's colour-map effects combine ([Heitz13] Sec. 6)"),
+      declare("weight", ParameterType::number, -1e3, 1e3, 1.0, "Weight in a linear combination")};
+  p[4].default_value = "linear";
+  if (which != ColormapCase::slope) {
+    p.push_back(declare("driver", ParameterType::file, 0, 0, nullptr, "The driver image f (else noise)"));
+    p.push_back(declare("noise", ParameterType::object, 0, 0, nullptr,
+                        "Procedural driver {cells, octaves, gain, seed} (the default without a driver)"));
+    p.push_back(declare("scale", ParameterType::number, -1e6, 1e6, 1.0, "f is mapped as offset + scale * f"));
+    p.push_back(declare("offset", ParameterType::number, -1e6, 1e6, 0.0, "f is mapped as offset + scale * f"));
+  }
+  if (which == ColormapCase::height)
+    p.push_back(declare("sigma_h", ParameterType::number, 1e-6, 1e6, 0.1, "Standard deviation of the heights"));
+  if (which != ColormapCase::texture)
+    p.push_back(declare("slope_sigma", ParameterType::number, 1e-3, 10, 0.3, "Standard deviation of the slopes"));
+  if (which == ColormapCase::slope) {
+    p.push_back(declare("direction_degrees", ParameterType::number, -360, 360, 0.0, "Direction d of the slope"));
+    p.push_back(declare("offset", ParameterType::number, -1e6, 1e6, 0.5, "Added to d . s"));
+  }
+  return p;
+}
+
+// The procedural driver: an object of {cells, octaves, gain, seed}, every key optional.
+nlohmann::json parse_noise(const nlohmann::json* noise, const std::string& path) {
+  static const nlohmann::json kDefaults = nlohmann::json::object();
+  JsonObjectReader n(noise ? *noise : kDefaults, path);
+  std::array<uint32_t, 2> cells{8, 8};
+  if (const auto* v = n.optional("cells")) {
     if (!v->is_array() || v->size() != 2)
-      throw Error(ExitCode::invalid_input, "expected [width, height]", r.child("table_size"));
-    for (size_t i = 0; i < 2; ++i)
-      size[i] = json_uint((*v)[i], json_index_path(r.child("table_size"), i), kColormapMinSide, kColormapMaxSide);
+      throw Error(ExitCode::invalid_input, "expected [cells_u, cells_v]", n.child("cells"));
+    for (size_t i = 0; i < 2; ++i) cells[i] = json_uint((*v)[i], json_index_path(n.child("cells"), i), 1, 1u << 20);
   }
-  o["table_size"] = size;
-  o["sigma_max"] = 0.0;  // 0: the default, half the colour map's domain
-  if (const auto* v = r.optional("sigma_max")) o["sigma_max"] = float(json_number(*v, r.child("sigma_max"), 0, 1e6));
-  o["mode"] = "filtered";
-  if (const auto* v = r.optional("mode")) o["mode"] = json_choice(*v, r.child("mode"), {"naive", "filtered"});
-  // Sec. 6: how the colour-map effects of one material combine (libbake/eval/colormap_effect.h).
-  o["combine"] = "linear";
-  if (const auto* v = r.optional("combine")) o["combine"] = json_choice(*v, r.child("combine"), {"linear", "product"});
-  o["weight"] = 1.0;
-  if (const auto* v = r.optional("weight")) {
-    if (o["combine"] == "product")
-      throw Error(ExitCode::invalid_input, "a product combination takes no weights", r.child("weight"));
-    o["weight"] = json_number(*v, r.child("weight"), -1e3, 1e3);
-  }
+  const auto* octaves = n.optional("octaves");
+  const auto* gain = n.optional("gain");
+  const auto* seed = n.optional("seed");
+  nlohmann::json o = {{"cells", cells},
+                      {"octaves", octaves ? json_uint(*octaves, n.child("octaves"), 1, 16) : 4u},
+                      {"gain", gain ? json_number(*gain, n.child("gain"), 0, 1) : 0.5},
+                      {"seed", seed ? json_uint(*seed, n.child("seed"), 0, 0xffffffffu) : 1u}};
+  n.reject_unknown_keys();
+  return o;
 }
 
-// The driver f: an image (first channel) or procedural noise, mapped as offset + scale * f.
-void parse_driver(JsonObjectReader& r, const std::filesystem::path& folder, EffectUse& use) {
+// Reads the declared keys; the files are resolved, and the driver is an image or noise, not both.
+EffectUse parse_colormap_options(JsonObjectReader& r, const std::filesystem::path& folder,
+                                 const std::vector<Parameter>& parameters) {
+  EffectUse use;
   nlohmann::json& o = use.options;
-  const auto* noise = r.optional("noise");
-  if (r.optional("driver")) {
-    if (noise) throw Error(ExitCode::invalid_input, "give either 'driver' or 'noise', not both", r.child("noise"));
-    o["driver"] = effect_file_option(r, "driver", folder, use);
-  } else {
-    static const nlohmann::json kDefaults = nlohmann::json::object();
-    JsonObjectReader n(noise ? *noise : kDefaults, r.child("noise"));
-    std::array<uint32_t, 2> cells{8, 8};
-    if (const auto* v = n.optional("cells")) {
-      if (!v->is_array() || v->size() != 2)
-        throw Error(ExitCode::invalid_input, "expected [cells_u, cells_v]", n.child("cells"));
-      for (size_t i = 0; i < 2; ++i) cells[i] = json_uint((*v)[i], json_index_path(n.child("cells"), i), 1, 1u << 20);
+  for (const Parameter& p : parameters) {
+    if (p.name == "colormap") {
+      o[p.name] = effect_file_option(r, p.name, folder, use);
+    } else if (p.name == "driver") {
+      if (r.optional("driver")) o["driver"] = effect_file_option(r, "driver", folder, use);
+    } else if (p.name == "noise") {
+      const nlohmann::json* noise = r.optional("noise");
+      if (noise && o.contains("driver"))
+        throw Error(ExitCode::invalid_input, "give either 'driver' or 'noise', not both", r.child("noise"));
+      if (!o.contains("driver")) o["noise"] = parse_noise(noise, r.child("noise"));
+    } else if (p.name == "weight") {
+      if (r.optional("weight") && o["combine"] == "product")
+        throw Error(ExitCode::invalid_input, "a product combination takes no weights", r.child("weight"));
+      o[p.name] = read_parameter(r, p);
+    } else {
+      o[p.name] = read_parameter(r, p);
     }
-    const auto* octaves = n.optional("octaves");
-    const auto* gain = n.optional("gain");
-    const auto* seed = n.optional("seed");
-    o["noise"] = {{"cells", cells},
-                  {"octaves", octaves ? json_uint(*octaves, n.child("octaves"), 1, 16) : 4u},
-                  {"gain", gain ? json_number(*gain, n.child("gain"), 0, 1) : 0.5},
-                  {"seed", seed ? json_uint(*seed, n.child("seed"), 0, 0xffffffffu) : 1u}};
-    n.reject_unknown_keys();
   }
-  const auto* scale = r.optional("scale");
-  const auto* offset = r.optional("offset");
-  o["scale"] = scale ? json_number(*scale, r.child("scale"), -1e6, 1e6) : 1.0;
-  o["offset"] = offset ? json_number(*offset, r.child("offset"), -1e6, 1e6) : 0.0;
-}
-
-double slope_sigma_option(JsonObjectReader& r) {
-  const auto* v = r.optional("slope_sigma");
-  return v ? json_number(*v, r.child("slope_sigma"), 1e-3, 10) : 0.3;
+  o["sigma_max"] = float(o["sigma_max"].get<double>());  // as the asset records it
+  return use;
 }
 
 std::vector<AssetRecipe> colormap_assets(const EffectUse& use) {
@@ -110,23 +142,9 @@ EffectInfo colormap_effect_of(ColormapCase which) {
   EffectInfo e;
   e.needs_normal_map = false;
   e.sets_albedo = true;
-  e.parse_options = [which](JsonObjectReader& r, const std::filesystem::path& folder) {
-    EffectUse use;
-    parse_common(r, folder, use);
-    if (which != ColormapCase::slope) parse_driver(r, folder, use);
-    if (which == ColormapCase::height) {
-      const auto* v = r.optional("sigma_h");
-      use.options["sigma_h"] = v ? json_number(*v, r.child("sigma_h"), 1e-6, 1e6) : 0.1;
-      use.options["slope_sigma"] = slope_sigma_option(r);
-    }
-    if (which == ColormapCase::slope) {
-      use.options["slope_sigma"] = slope_sigma_option(r);
-      const auto* d = r.optional("direction_degrees");
-      const auto* offset = r.optional("offset");
-      use.options["direction_degrees"] = d ? json_number(*d, r.child("direction_degrees"), -360, 360) : 0.0;
-      use.options["offset"] = offset ? json_number(*offset, r.child("offset"), -1e6, 1e6) : 0.5;
-    }
-    return use;
+  e.parameters = colormap_parameters(which);
+  e.parse_options = [parameters = e.parameters](JsonObjectReader& r, const std::filesystem::path& folder) {
+    return parse_colormap_options(r, folder, parameters);
   };
   e.assets = [](const Material&, const EffectUse& use) { return colormap_assets(use); };
   return e;

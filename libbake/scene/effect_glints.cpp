@@ -1,52 +1,59 @@
 // The `glints` effect ([Wang20]; libbake/glint/glint_technique.h): specular glints from the infinite,
 // non-repeating microstructure blended from the material's normal map (the example). Bakes ONLY the example's
 // standardization LUTs (asset kind `lut`) and its RMQ table (asset kind `rmq`); its evaluator side is
-// libbake/eval/glints_effect.h. Options (all optional):
+// libbake/eval/glints_effect.h. Keys (all optional; README "Effect glints"):
 //   blending  "histogram"  none | linear | variance | histogram ([Wang20] Eqs. 4-6; none: one patch, for flakes)
-//   sigma_r   0.01         intrinsic roughness, in normal units, (0, 1]
-//   patch     64           example patch side in texels, a power of two in [2, 4096] (target patches are half)
-//   seed      1            patch placement hash seed, [1, 2^32 - 1]
-//   lut_size  4096         samples per standardization table, [2, 65536]
-//   bits      16           RMQ code bits, 8 or 16
-#include <string>
-
-#include "formats/error.h"
-
+//   sigma_r   0.01         intrinsic roughness, in normal units
+//   patch     64           the rmq technique's --patch, at least 2 (target patches are half)
+//   seed      1            patch placement hash seed
+//   lut_size  4096         the lut technique's --size
+//   bits      16           the rmq technique's --bits
 #include "libbake/glint/lut_asset.h"
 #include "libbake/glint/rmq_asset.h"
 #include "libbake/scene/effect_registry.h"
+#include "libbake/scene/technique_parameters.h"
 
 namespace mbk {
+namespace {
+
+std::vector<Parameter> glints_parameters() {
+  Parameter blending;
+  blending.name = "blending";
+  blending.type = ParameterType::choice;
+  blending.choices = {"none", "linear", "variance", "histogram"};
+  blending.default_value = "histogram";
+  blending.doc = "How patches blend: none (one patch, for flakes), linear, variance or histogram ([Wang20] Eqs. 4-6)";
+  Parameter sigma_r;
+  sigma_r.name = "sigma_r";
+  sigma_r.type = ParameterType::number;
+  sigma_r.min = 1e-6;
+  sigma_r.max = 1.0;
+  sigma_r.default_value = 0.01;
+  sigma_r.doc = "Intrinsic roughness, in normal units";
+  Parameter patch = effect_parameter("rmq", "patch", "patch");
+  patch.min = 2;
+  patch.default_value = 64;
+  Parameter seed;
+  seed.name = "seed";
+  seed.min = 1;
+  seed.max = 4294967295.0;
+  seed.default_value = 1;
+  seed.doc = "Patch placement hash seed";
+  return {blending,
+          sigma_r,
+          patch,
+          seed,
+          effect_parameter("lut", "size", "lut_size"),
+          effect_parameter("rmq", "bits", "bits")};
+}
+
+}  // namespace
 
 EffectInfo glints_effect() {
   EffectInfo e;
   e.name = "glints";
   e.summary = "specular glints of an infinite microstructure blended from the normal map (bakes lut and rmq)";
-  e.parse_options = [](JsonObjectReader& r, const std::filesystem::path&) {
-    EffectUse use;
-    use.name = "glints";
-    const nlohmann::json* v = r.optional("blending");
-    const std::string blending =
-        v ? json_choice(*v, r.child("blending"), {"none", "linear", "variance", "histogram"}) : "histogram";
-    v = r.optional("sigma_r");
-    const double sigma_r = v ? json_number(*v, r.child("sigma_r"), 1e-6, 1.0) : 0.01;
-    v = r.optional("patch");
-    const uint32_t patch = v ? json_uint(*v, r.child("patch"), 2, 4096) : 64;
-    if ((patch & (patch - 1)) != 0)
-      throw Error(ExitCode::invalid_input, "glints patch must be a power of two, got " + std::to_string(patch),
-                  r.child("patch"));
-    v = r.optional("seed");
-    const uint32_t seed = v ? json_uint(*v, r.child("seed"), 1, UINT32_MAX) : 1;
-    v = r.optional("lut_size");
-    const uint32_t lut_size = v ? json_uint(*v, r.child("lut_size"), 2, 65536) : 4096;
-    v = r.optional("bits");
-    const uint32_t bits = v ? json_uint(*v, r.child("bits"), 8, 16) : 16;
-    if (bits != 8 && bits != 16)
-      throw Error(ExitCode::invalid_input, "glints bits must be 8 or 16, got " + std::to_string(bits), r.child("bits"));
-    use.options = {{"blending", blending}, {"sigma_r", sigma_r},   {"patch", patch},
-                   {"seed", seed},         {"lut_size", lut_size}, {"bits", bits}};
-    return use;
-  };
+  e.parameters = glints_parameters();
   e.assets = [](const Material& m, const EffectUse& use) {
     const BakeInput map = normal_map_input(m);
     const uint32_t lut_size = use.options.at("lut_size"), patch = use.options.at("patch"),

@@ -1,8 +1,6 @@
 // The effects materials may name, and the assets each needs (see effect_registry.h).
 #include "libbake/scene/effect_registry.h"
 
-#include "formats/error.h"
-
 namespace mbk {
 
 std::span<const EffectInfo> effect_registry() {
@@ -28,8 +26,10 @@ BakeInput normal_map_input(const Material& material) { return {material.normal_m
 
 std::string effect_file_option(JsonObjectReader& r, const std::string& key, const std::filesystem::path& folder,
                                EffectUse& use) {
-  const std::string file = json_string(r.required(key), r.child(key));
-  if (file.empty()) throw Error(ExitCode::invalid_input, "empty path", r.child(key));
+  Parameter declared;
+  declared.name = key;
+  declared.type = ParameterType::file;
+  const std::string file = read_parameter(r, declared);
   const std::filesystem::path p(file);
   use.files[key] = p.is_absolute() ? p : folder / p;
   return file;

@@ -1,6 +1,8 @@
 // The registry of effects a material can name in its `effects` list. Each effect declares:
-//   - its scene options (parse_options: reads an effect object's keys other than "name", rejects unknown
-//     ones, fills defaults; nullptr when the effect has none and may only be named as a string);
+//   - its scene options: `parameters` declares every key an effect object may hold besides "name" (the technique
+//     parameters it bakes with, technique_parameters.h, and its own); the scene reads them with read_parameter
+//     unless the effect has a parse_options of its own (keys that depend on each other, files to resolve), which
+//     must read exactly the declared keys (tests/scene/parameter_schema_test.cpp checks it);
 //   - whether it needs the material's normal map;
 //   - the assets it needs baked for one material (assets): per asset, the kind (formats/asset_kind.h),
 //     the canonical bake parameters and the input files, which `bake` compares with a file's metadata to
@@ -23,6 +25,7 @@
 #include "libbake/core/progress.h"
 #include "libbake/scene/effect_use.h"
 #include "libbake/scene/json_fields.h"
+#include "libbake/scene/parameter_schema.h"
 #include "libbake/scene/scene.h"
 
 namespace mbk {
@@ -48,6 +51,8 @@ struct EffectInfo {
   // effects that supply normals or reflect light (mip, crease, glints) build their shader afresh and would drop a
   // colour set before them; consecutive colour effects combine (libbake/eval/colormap_effect.h).
   bool sets_albedo = false;
+  std::vector<Parameter> parameters;  // the keys of the effect's object; empty: it is named as a string only
+  // Reads the effect's keys into canonical options; nullptr: each of `parameters` by read_parameter.
   std::function<EffectUse(JsonObjectReader& options, const std::filesystem::path& scene_folder)> parse_options;
   std::function<std::vector<AssetRecipe>(const Material&, const EffectUse&)> assets;
 };

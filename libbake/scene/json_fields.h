@@ -45,6 +45,8 @@ class JsonObjectReader {
   const nlohmann::json& required(const std::string& key);
   // Error naming the first key (in the object's sorted order) that no one read, listing the keys read.
   void reject_unknown_keys() const;
+  // The keys looked up so far, present or not.
+  const std::set<std::string>& keys_read() const { return read_; }
 
  private:
   const nlohmann::json& object_;

@@ -112,8 +112,11 @@ EffectUse parse_effect(const nlohmann::json& v, const std::string& at, const Mat
   }
   if (effect->needs_normal_map && !m.normal_map) fail("effect '" + name + "' needs a normal_map in this material", at);
   EffectUse use;
-  if (effect->parse_options) use = effect->parse_options(options, folder);
-  options.reject_unknown_keys();  // an effect without parse_options takes no options
+  if (effect->parse_options)
+    use = effect->parse_options(options, folder);
+  else
+    for (const Parameter& p : effect->parameters) use.options[p.name] = read_parameter(options, p);
+  options.reject_unknown_keys();  // only the declared keys
   use.name = name;
   return use;
 }

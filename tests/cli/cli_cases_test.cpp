@@ -1,6 +1,6 @@
 // CLI tests as data (tests/cli/cases.json): each case is a command line, the expected exit code, and what
-// stdout/stderr must hold — text fragments, a regular expression, or a golden JSON file (tests/cli/golden/,
-// rewritten when MICROBAKE_UPDATE_GOLDEN=1). Every failing case must print exactly one line
+// stdout/stderr must hold — text fragments (or, "stdout_lacks", must not), a regular expression, or a golden JSON file
+// (tests/cli/golden/, rewritten when MICROBAKE_UPDATE_GOLDEN=1). Every failing case must print exactly one line
 // `microbake: error: ...` on stderr, and the files a case lists under "absent" must not exist afterwards
 // (no partial outputs). Placeholders: {exe} the built microbake, {tmp} this run's scratch folder, {src} the
 // source tree. Commands run in the scratch folder, so relative paths name files there: a golden that shows paths
@@ -133,6 +133,12 @@ TEST_P(CliCaseTest, Behaves) {
   for (const auto& frag : c.value("stderr_contains", json::array()))
     EXPECT_NE(r.err.find(expand(frag.get<std::string>())), std::string::npos) << "stderr lacks " << frag << ":\n"
                                                                               << r.err;
+  for (const auto& frag : c.value("stdout_lacks", json::array()))
+    EXPECT_EQ(r.out.find(expand(frag.get<std::string>())), std::string::npos) << "stdout holds " << frag << ":\n"
+                                                                              << r.out;
+  if (c.contains("stdout_regex")) {
+    EXPECT_TRUE(std::regex_search(r.out, std::regex(c["stdout_regex"].get<std::string>()))) << r.out;
+  }
   if (c.contains("stderr_regex")) {
     EXPECT_TRUE(std::regex_search(r.err, std::regex(c["stderr_regex"].get<std::string>()))) << r.err;
   }

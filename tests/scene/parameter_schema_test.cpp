@@ -1,0 +1,267 @@
+// The option schemas (libbake/scene/technique_parameters.h) against everything that must agree with them: each scene
+// effect reads exactly its declared keys, with the declared defaults and ranges (the edges accepted, one step beyond
+// refused at the key's JSON path); an effect key taken from a technique stays inside the technique's range; every
+// technique parameter with an option is that command's option in `microbake <technique> --help` with the same values
+// and default, refused one step beyond its range by the real command; and the README's option table of the command
+// lists it with the same default. A drift in any of them fails here.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "formats/error.h"
+#include "libbake/scene/effect_registry.h"
+#include "libbake/scene/scene.h"
+#include "libbake/scene/technique_parameters.h"
+#include "tests/image/cli_run.h"
+
+namespace mbk {
+namespace {
+
+using nlohmann::json;
+
+json scene_with(const json& effect) {
+  return {{"camera", {{"position", {0, 1, 5}}, {"look_at", {0, 0, 0}}, {"width", 8}, {"height", 8}}},
+          {"shapes", {{{"type", "plane"}, {"size", {4, 4}}, {"material", "m"}}}},
+          {"materials", {{"m", {{"normal_map", {{"path", "maps/n.png"}}}, {"effects", {effect}}}}}},
+          {"lights", {{{"type", "sky"}, {"radiance", 1}}}}};
+}
+
+// The effect object with its required keys (the files) and `extra`.
+json effect_object(const EffectInfo& e, const json& extra = json::object()) {
+  json o = {{"name", e.name}};
+  for (const Parameter& p : e.parameters)
+    if (p.type == ParameterType::file && p.name != "driver") o[p.name] = "file.json";
+  for (auto it = extra.begin(); it != extra.end(); ++it) o[it.key()] = it.value();
+  return o;
+}
+
+// The canonical options the scene reads for `effect`, or the error it throws.
+json options_of(const json& effect) {
+  const Scene s = parse_scene(scene_with(effect), "/scenes");
+  return s.materials.at("m").effects.at(0).options;
+}
+
+Error error_of(const json& effect) {
+  try {
+    options_of(effect);
+  } catch (const Error& e) {
+    return e;
+  }
+  ADD_FAILURE() << "accepted: " << effect.dump();
+  return Error(ExitCode::success, "");
+}
+
+// Values one step outside the declared range (none for an unbounded side).
+std::vector<json> outside(const Parameter& p) {
+  std::vector<json> values;
+  if (p.type == ParameterType::number) {
+    values.push_back(std::nextafter(p.min, -INFINITY));
+    values.push_back(std::nextafter(p.max, INFINITY));
+  } else if (p.type == ParameterType::integer) {
+    values.push_back(int64_t(p.min) - 1);
+    if (p.max < 4294967295.0) values.push_back(int64_t(p.max) + 1);
+    if (!p.allowed.empty()) values.push_back(p.allowed[0] + 1);
+    if (p.power_of_two) values.push_back(int64_t(p.min) * 2 + 1);
+  } else if (p.type == ParameterType::choice) {
+    values.push_back("zz");
+  } else if (p.type == ParameterType::size2) {
+    values.push_back(json::array({int64_t(p.min) - 1, int64_t(p.min)}));
+    values.push_back(json::array({int64_t(p.min), int64_t(p.max) + 1}));
+  }
+  return values;
+}
+
+// Values at the edges of the declared range, all valid.
+std::vector<json> edges(const Parameter& p) {
+  switch (p.type) {
+    case ParameterType::number:
+      return {p.min, p.max};
+    case ParameterType::integer:
+      if (!p.allowed.empty()) return {p.allowed.front(), p.allowed.back()};
+      return {uint32_t(p.min), p.power_of_two ? uint32_t(std::exp2(std::floor(std::log2(p.max)))) : uint32_t(p.max)};
+    case ParameterType::choice:
+      return {p.choices.begin(), p.choices.end()};
+    case ParameterType::size2:
+      return {json::array({uint32_t(p.min), uint32_t(p.max)})};
+    default:
+      return {};
+  }
+}
+
+TEST(ParameterSchema, EveryEffectReadsExactlyItsDeclaredKeys) {
+  for (const EffectInfo& e : effect_registry()) {
+    std::set<std::string> declared;
+    for (const Parameter& p : e.parameters) EXPECT_TRUE(declared.insert(p.name).second) << e.name << ": " << p.name;
+    if (!e.parse_options) continue;  // the scene reads each declared key itself (scene.cpp)
+    const json object = effect_object(e);
+    JsonObjectReader r(object, "e");
+    (void)r.optional("name");
+    e.parse_options(r, "/scenes");
+    std::set<std::string> read = r.keys_read();
+    read.erase("name");
+    EXPECT_EQ(read, declared) << e.name;
+  }
+}
+
+TEST(ParameterSchema, EffectKeysHonourTheirDefaultsAndRanges) {
+  for (const EffectInfo& e : effect_registry()) {
+    for (const Parameter& p : e.parameters) {
+      const std::string what = e.name + "." + p.name;
+      EXPECT_FALSE(p.doc.empty()) << what;
+      if (p.type == ParameterType::file || p.type == ParameterType::object) continue;
+      const json defaults = options_of(effect_object(e));
+      if (!p.default_value.is_null()) {
+        EXPECT_EQ(defaults.at(p.name), p.default_value) << what;
+      }
+      for (const json& v : edges(p)) {
+        const json got = options_of(effect_object(e, {{p.name, v}})).at(p.name);
+        if (p.type == ParameterType::number)
+          EXPECT_NEAR(got.get<double>(), v.get<double>(), std::abs(v.get<double>()) * 1e-7) << what;
+        else
+          EXPECT_EQ(got, v) << what;
+      }
+      for (const json& v : outside(p)) {
+        const Error err = error_of(effect_object(e, {{p.name, v}}));
+        EXPECT_EQ(err.code(), ExitCode::invalid_input) << what << " = " << v.dump();
+        EXPECT_EQ(err.where().rfind("materials.m.effects[0]." + p.name, 0), 0u)
+            << what << " = " << v.dump() << ": " << err.where();
+      }
+    }
+  }
+}
+
+TEST(ParameterSchema, KeysTakenFromATechniqueStayInsideItsRange) {
+  size_t derived = 0;
+  for (const EffectInfo& e : effect_registry())
+    for (const Parameter& p : e.parameters) {
+      if (p.source.empty()) continue;
+      ++derived;
+      const size_t dot = p.source.find('.');
+      const Parameter& t = technique_schema(p.source.substr(0, dot)).at(p.source.substr(dot + 1));
+      EXPECT_EQ(p.type, t.type) << p.source;
+      EXPECT_GE(p.min, t.min) << p.source;
+      EXPECT_LE(p.max, t.max) << p.source;
+      EXPECT_EQ(p.allowed, t.allowed) << p.source;
+      EXPECT_EQ(p.power_of_two, t.power_of_two) << p.source;
+      EXPECT_EQ(p.choices, t.choices) << p.source;
+      if (!p.default_value.is_null()) {
+        EXPECT_TRUE(parameter_value_error(t, p.default_value).empty()) << p.source;
+      }
+    }
+  EXPECT_GE(derived, 5u);  // glints' patch, lut_size and bits; colormap's table_size and sigma_max
+}
+
+// Every technique parameter with an option in a scene is read by an effect with the same range.
+TEST(ParameterSchema, SceneParametersOfATechniqueAreSomeEffectsKeys) {
+  for (const TechniqueSchema& t : technique_schemas())
+    for (const Parameter& p : t.parameters) {
+      if (!p.in_scenes) continue;
+      bool found = false;
+      for (const EffectInfo& e : effect_registry())
+        for (const Parameter& k : e.parameters) found = found || k.source == t.technique + "." + p.name;
+      EXPECT_TRUE(found) << t.technique << "." << p.name << " is read by no effect";
+    }
+}
+
+std::string help_of(const std::string& command) {
+  const test::ScratchDir dir;
+  const test::CliRun r = test::run_cli(command + " --help", dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return r.out;
+}
+
+// What a command line needs besides the option `tested`.
+std::string required_arguments(const std::string& technique, const std::string& tested) {
+  std::string args = " in.png -o out.mbk";
+  if (technique == "crease") args += " --curves c.json";
+  if (technique == "synth") args = " in.mbk -o out.png --window 0,0,1,1";
+  if (technique == "synth" && tested != "--level") args += " --level 1";
+  return args;
+}
+
+std::vector<std::string> outside_texts(const Parameter& p) {
+  std::vector<std::string> texts;
+  for (const json& v : outside(p)) {
+    char exact[40];
+    std::snprintf(exact, sizeof exact, "%.17g", v.is_number() ? v.get<double>() : 0.0);
+    texts.push_back(p.type == ParameterType::size2    ? v[0].dump() + "x" + v[1].dump()
+                    : p.type == ParameterType::number ? std::string(exact)
+                                                      : parameter_value_text(p, v));
+  }
+  if (p.type == ParameterType::number) texts.push_back("nan");
+  return texts;
+}
+
+TEST(ParameterSchema, EveryTechniqueParameterIsItsCommandsOptionWithTheSameValues) {
+  for (const TechniqueSchema& t : technique_schemas()) {
+    if (t.parameters.empty()) continue;
+    const std::string help = help_of(t.technique);
+    for (const Parameter& p : t.parameters) {
+      if (p.option.empty()) continue;
+      const std::string what = t.technique + " " + p.option;
+      EXPECT_NE(help.find("  " + p.option + " " + parameter_label(p)), std::string::npos) << what << "\n" << help;
+      if (!p.default_value.is_null()) {
+        EXPECT_NE(help.find("(default: " + parameter_value_text(p, p.default_value) + ")"), std::string::npos) << what;
+      }
+      if (p.required) {
+        EXPECT_NE(help.find(p.option + " " + parameter_label(p) + " (required)"), std::string::npos) << what;
+      }
+      const test::ScratchDir dir;
+      for (const std::string& text : outside_texts(p)) {
+        const test::CliRun r =
+            test::run_cli(t.technique + required_arguments(t.technique, p.option) + " " + p.option + " " + text, dir);
+        EXPECT_EQ(r.exit_code, 1) << what << " " << text << ": " << r.err;
+        EXPECT_NE(r.err.find(p.option + ": '" + text + "' is not"), std::string::npos)
+            << what << " " << text << ": " << r.err;
+      }
+    }
+  }
+}
+
+// The rows "| `--option ...` | default | meaning |" of README.md's section on `microbake <command>`.
+std::map<std::string, std::string> readme_option_defaults(const std::string& command) {
+  std::ifstream in(std::string(MICROBAKE_SOURCE_DIR) + "/README.md");
+  std::map<std::string, std::string> rows;
+  bool inside = false;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("### ", 0) == 0) inside = line.rfind("### `microbake " + command + "`", 0) == 0;
+    if (!inside || line.rfind("| `--", 0) != 0) continue;
+    const size_t name_end = line.find_first_of(" `", 3);
+    auto separator = [&](size_t from) {  // the next '|' that is not an escaped "\|"
+      size_t at = line.find('|', from);
+      while (at != std::string::npos && line[at - 1] == '\\') at = line.find('|', at + 1);
+      return at;
+    };
+    const size_t cell = separator(1);
+    const size_t cell_end = separator(cell + 1);
+    std::string fallback = line.substr(cell + 1, cell_end - cell - 1);
+    fallback.erase(std::remove(fallback.begin(), fallback.end(), '`'), fallback.end());
+    rows[line.substr(3, name_end - 3)] = fallback.substr(fallback.find_first_not_of(' '));
+  }
+  return rows;
+}
+
+TEST(ParameterSchema, TheReadmeTableOfEachCommandListsItsOptionsWithTheirDefaults) {
+  for (const TechniqueSchema& t : technique_schemas()) {
+    const auto rows = readme_option_defaults(t.technique);
+    for (const Parameter& p : t.parameters) {
+      if (p.option.empty()) continue;
+      const std::string what = t.technique + " " + p.option;
+      ASSERT_TRUE(rows.count(p.option)) << what << " is not in README.md's table of `microbake " << t.technique << "`";
+      const std::string& cell = rows.at(p.option);
+      if (p.required) {
+        EXPECT_EQ(cell.rfind("(required)", 0), 0u) << what << ": " << cell;
+      } else if (p.type == ParameterType::number || (p.type == ParameterType::integer && !p.default_value.is_null())) {
+        EXPECT_EQ(std::stod(cell), p.default_value.get<double>()) << what << ": " << cell;
+      } else if (!p.default_value.is_null()) {
+        EXPECT_EQ(cell.substr(0, cell.find(' ')), parameter_value_text(p, p.default_value)) << what << ": " << cell;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace mbk
