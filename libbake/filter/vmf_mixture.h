@@ -56,6 +56,8 @@ inline constexpr double kVmfKappaMax = 1e6;
 inline constexpr double kEmptyAmplitude = 1e-9;
 // Normals per chunk of the E-step's sums (the unit of its parallel split; partial sums are added in chunk order).
 inline constexpr size_t kVmfSumChunk = size_t(1) << 14;
+// Lobes per mixture at most.
+inline constexpr int kVmfMaxLobes = 16;
 // EM iterations at most per fit by default.
 inline constexpr int kVmfDefaultMaxIterations = 1000;
 
@@ -75,8 +77,9 @@ struct EmOptions {
   double tolerance = 1e-6;  // on the weighted mean log-likelihood (nats per normal)
   int max_iterations = kVmfDefaultMaxIterations;
   double kappa_max = kVmfKappaMax;
-  double align = 0.0;  // C of Eq. 7.26
-  bool reseed = true;  // the collapse guard (false: plain EM)
+  double align = 0.0;      // C of Eq. 7.26
+  bool reseed = true;      // the collapse guard (false: plain EM)
+  bool accelerate = true;  // SQUAREM steps (without alignment)
 };
 
 struct EmReport {

@@ -41,11 +41,14 @@
 namespace mbk {
 
 inline constexpr int kVmfDefaultLobes = 4;
-inline constexpr int kVmfMaxLobes = 16;
+
+// Chunks per texel at most for the coarse-level fits (vmf_normal_chunks.h).
+inline constexpr size_t kVmfDefaultMaxChunks = 1024;
 
 struct VmfBakeOptions {
   int lobes = kVmfDefaultLobes;
   EmOptions em;
+  size_t max_chunks = kVmfDefaultMaxChunks;  // texels of more normals fit chunks first; 0: never
 };
 
 struct VmfLevelStatistics {

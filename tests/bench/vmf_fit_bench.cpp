@@ -44,6 +44,8 @@ int main(int argc, char** argv) {
       options.lobes = std::atoi(argv[++a]);
     } else if (arg == "--max-iterations" && a + 1 < argc) {
       options.em.max_iterations = std::atoi(argv[++a]);
+    } else if (arg == "--max-chunks" && a + 1 < argc) {
+      options.max_chunks = size_t(std::atol(argv[++a]));
     } else if (arg == "--sample" && a + 1 < argc) {
       sample = std::atoi(argv[++a]);
     } else if (arg == "--starts" && a + 1 < argc) {
