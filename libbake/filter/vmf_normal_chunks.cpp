@@ -46,7 +46,9 @@ std::vector<WeightedNormal> vmf_normal_chunks(std::span<const WeightedNormal> no
   };
   std::vector<Entry> order(normals.size());
   for (size_t i = 0; i < normals.size(); ++i) order[i] = {cell_code(normals[i].n), &normals[i]};
-  const auto value = [](const Entry& e) { return std::tuple(e.code, e.normal->n.x(), e.normal->n.y(), e.normal->n.z()); };
+  const auto value = [](const Entry& e) {
+    return std::tuple(e.code, e.normal->n.x(), e.normal->n.y(), e.normal->n.z());
+  };
   std::stable_sort(order.begin(), order.end(), [&](const Entry& a, const Entry& b) { return value(a) < value(b); });
   const auto same_normal = [](const Entry& a, const Entry& b) { return a.normal->n == b.normal->n; };
   // Atoms: the runs of identical normals. cells[k]: occupied cells of the 2^k grid. Neighbours in the order whose

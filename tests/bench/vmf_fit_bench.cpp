@@ -3,7 +3,7 @@
 // stored lobes over every texel (the asset's statistic), and over up to SAMPLE evenly spaced texels the same for
 // the stored lobes and for the best of STARTS reference runs, with the EM statistics and the top texel's lobes.
 //
-//   bench_vmf_fit [--lobes J] [--max-iterations N] [--sample M] [--starts S] INPUT...
+//   bench_vmf_fit [--lobes J] [--max-iterations N] [--max-chunks C] [--sample M] [--starts S] INPUT...
 //   INPUT: gen:KIND:SIZE (`microbake gen KIND --size SIZE --seed 1`, in memory) or PATH.png[:-Y]
 #include <chrono>
 #include <cstdio>

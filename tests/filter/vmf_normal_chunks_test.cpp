@@ -30,7 +30,8 @@ std::vector<WeightedNormal> normals_around(const Vec3& mu, double kappa, size_t 
   return out;
 }
 
-void expect_same_mass_and_moment(const std::vector<WeightedNormal>& normals, const std::vector<WeightedNormal>& chunks) {
+void expect_same_mass_and_moment(const std::vector<WeightedNormal>& normals,
+                                 const std::vector<WeightedNormal>& chunks) {
   double w = 0.0, cw = 0.0;
   Vec3 s = Vec3::Zero(), cs = Vec3::Zero();
   for (const auto& x : normals) w += x.w, s += x.w * x.n;
@@ -86,7 +87,8 @@ TEST(VmfNormalChunks, ChunkLikelihoodIsALowerBound) {
     double gap = 0.0;
     for (int trial = 0; trial < 20; ++trial) {
       const auto m = random_mixture(rng, 1 + trial % 4);
-      const double on_chunks = vmf_mixture_log_likelihood(chunks, m), on_normals = vmf_mixture_log_likelihood(normals, m);
+      const double on_chunks = vmf_mixture_log_likelihood(chunks, m),
+                   on_normals = vmf_mixture_log_likelihood(normals, m);
       EXPECT_LE(on_chunks, on_normals + 1e-9 + 1e-10 * std::abs(on_normals)) << max_chunks;  // rounding (J = 1: equal)
       gap = std::max(gap, on_normals - on_chunks);
     }
