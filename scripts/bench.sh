@@ -10,7 +10,8 @@
 # table goes to stdout only, for iterating.
 #
 #   bash scripts/bench.sh [--quick] [BUILD_DIR]         # default build/ (Release)
-#   BENCH_RUNS=N (>= 3, default 3) runs; BENCH_VMF_SIZE=N runs the vmf row on an N x N map instead
+#   BENCH_RUNS=N (>= 3, default 3) runs; BENCH_VMF_SIZE=N runs the vmf row on an N x N map instead;
+#   BENCH_ROWS="vmf sh ..." runs only those rows and prints the table (BENCH.md keeps every row)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 quick=0
@@ -50,6 +51,14 @@ rows=(
   "crease|$crease_n|crease --curves $work/curves.json|memcpy"
   "mip|$mip_n|mip|maketx"
 )
+if [ -n "${BENCH_ROWS:-}" ]; then
+  selected=()
+  for row in "${rows[@]}"; do
+    for name in $BENCH_ROWS; do [ "${row%%|*}" = "$name" ] && selected+=("$row"); done
+  done
+  [ ${#selected[@]} -gt 0 ] || { echo "bench: BENCH_ROWS names no row (vmf sh rmq crease mip)" >&2; exit 2; }
+  rows=("${selected[@]}")
+fi
 
 # Runs a command under GNU time; appends its wall seconds, its "bake S s" stage (the wall time when it prints
 # none) and its peak RSS in KiB to $work/<key>.{wall,bake,rss}.
@@ -144,7 +153,7 @@ report=$(cat <<EOF
 
 Machine: $(hostname), $(nproc) cores, $cpu, $(awk '/MemTotal/ {printf "%.1f GiB", $2 / 1048576}' /proc/meminfo);
 load average $(cut -d' ' -f1-3 /proc/loadavg) when the table was written (the machine is shared: absolute
-times are inflated, the ratios within one run much less so). Command: \`$([ -n "${BENCH_VMF_SIZE:-}" ] && echo "BENCH_VMF_SIZE=$BENCH_VMF_SIZE ")bash scripts/bench.sh$([ $quick = 1 ] && echo " --quick") $build\`
+times are inflated, the ratios within one run much less so). Command: \`$([ -n "${BENCH_ROWS:-}" ] && echo "BENCH_ROWS=\"$BENCH_ROWS\" ")$([ -n "${BENCH_VMF_SIZE:-}" ] && echo "BENCH_VMF_SIZE=$BENCH_VMF_SIZE ")bash scripts/bench.sh$([ $quick = 1 ] && echo " --quick") $build\`
 (Release build), medians of $runs interleaved runs, each run going once through every row.
 
 Inputs: \`microbake gen bumps --size N\` (.exr, f32); the crease row adds random straight curves
@@ -160,7 +169,7 @@ Peak RSS is of the 2-thread process, with its ratio to the output file.
 ${table}
 EOF
 )
-if [ $quick = 1 ]; then
+if [ $quick = 1 ] || [ -n "${BENCH_ROWS:-}" ]; then
   echo "$report"
 else
   echo "$report" >examples/results/BENCH.md

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "formats/error.h"
 #include "libbake/core/parallel.h"
@@ -25,76 +26,72 @@ struct Partial {
   double log_likelihood = 0.0;
 };
 
+// The live lobes of a mixture as the E-step uses them: log alpha_j + log g_j(n) = log_scale_j + kappa_mu_j . n.
 struct LobeTerms {
-  std::vector<double> log_scale, kappa;  // log(alpha C(kappa)) - kappa, kappa; -inf scale for empty lobes
-  std::vector<Vec3> mu;
+  std::vector<size_t> live;       // mixture index of each live lobe
+  std::vector<double> log_scale;  // log(alpha C(kappa)) - kappa
+  std::vector<Vec3> kappa_mu;     // kappa mu
 };
 
 LobeTerms lobe_terms(const std::vector<VmfComponent>& mixture) {
+  if (mixture.size() > size_t(kVmfMaxLobes))
+    throw Error(ExitCode::runtime_failure, "internal: vMF mixture of " + std::to_string(mixture.size()) + " lobes");
   LobeTerms t;
-  for (const VmfComponent& c : mixture) {
-    const bool live = c.alpha > 0.0;
-    // log alpha + log g = log alpha + vmf_log_density(kappa, cos) = (log alpha + log_density(kappa, 0) + kappa) + kappa
-    // cos - kappa
-    t.log_scale.push_back(live ? std::log(c.alpha) + vmf_log_density(c.kappa, 1.0) - c.kappa
-                               : -std::numeric_limits<double>::infinity());
-    t.kappa.push_back(c.kappa);
-    t.mu.push_back(c.mu);
+  for (size_t j = 0; j < mixture.size(); ++j) {
+    const VmfComponent& c = mixture[j];
+    if (!(c.alpha > 0.0)) continue;
+    t.live.push_back(j);
+    t.log_scale.push_back(std::log(c.alpha) + vmf_log_density(c.kappa, 1.0) - c.kappa);
+    t.kappa_mu.push_back(c.kappa * c.mu);
   }
   return t;
 }
 
-// Log-domain responsibilities of normal n into z (size J); returns log sum_j alpha_j g_j(n).
-double responsibilities(const LobeTerms& t, const Vec3& n, std::vector<double>& z) {
-  const size_t J = t.kappa.size();
+// Responsibilities of the live lobes for normal n into z (size live.size()); returns log sum_j alpha_j g_j(n).
+// A term more than -kNegligibleLog below the largest gets z = 0 without a call to exp.
+double responsibilities(const LobeTerms& t, const Vec3& n, double* z) {
+  const size_t L = t.live.size();
   double top = -std::numeric_limits<double>::infinity();
-  for (size_t j = 0; j < J; ++j) {
-    z[j] = t.log_scale[j] == -std::numeric_limits<double>::infinity() ? t.log_scale[j]
-                                                                      : t.log_scale[j] + t.kappa[j] * t.mu[j].dot(n);
-    top = std::max(top, z[j]);
+  for (size_t l = 0; l < L; ++l) {
+    z[l] = t.log_scale[l] + t.kappa_mu[l].dot(n);
+    top = std::max(top, z[l]);
   }
   double sum = 0.0;
-  for (size_t j = 0; j < J; ++j) {
-    const double d = z[j] - top;
-    z[j] = d < kNegligibleLog ? 0.0 : std::exp(d);  // in [0, 1]; exactly 1 for the largest
-    sum += z[j];
+  for (size_t l = 0; l < L; ++l) {
+    const double d = z[l] - top;
+    z[l] = d < kNegligibleLog ? 0.0 : d == 0.0 ? 1.0 : std::exp(d);  // in [0, 1]; 1 for the largest
+    sum += z[l];
   }
-  for (size_t j = 0; j < J; ++j) z[j] /= sum;
+  const double inverse = 1.0 / sum;
+  for (size_t l = 0; l < L; ++l) z[l] *= inverse;
   return top + std::log(sum);
 }
 
-// log sum_j alpha_j g_j(n), the same log-sum-exp as responsibilities() without storing the terms.
+// log sum_j alpha_j g_j(n), the same log-sum-exp as responsibilities() without keeping the terms.
 double log_mixture_density(const LobeTerms& t, const Vec3& n) {
-  double top = -std::numeric_limits<double>::infinity();
-  for (size_t j = 0; j < t.kappa.size(); ++j)
-    if (t.log_scale[j] != -std::numeric_limits<double>::infinity())
-      top = std::max(top, t.log_scale[j] + t.kappa[j] * t.mu[j].dot(n));
-  if (top == -std::numeric_limits<double>::infinity()) return top;
-  double sum = 0.0;
-  for (size_t j = 0; j < t.kappa.size(); ++j) {
-    const double d = t.log_scale[j] + t.kappa[j] * t.mu[j].dot(n) - top;
-    if (d >= kNegligibleLog) sum += std::exp(d);
-  }
-  return top + std::log(sum);
+  double z[kVmfMaxLobes];
+  if (t.live.empty()) return -std::numeric_limits<double>::infinity();
+  return responsibilities(t, n, z);
 }
 
 // One E-step with sufficient statistics, chunked for determinism.
-Partial e_step(std::span<const WeightedNormal> normals, const LobeTerms& t) {
-  const size_t J = t.kappa.size(), chunks = (normals.size() + kChunk - 1) / kChunk;
+Partial e_step(std::span<const WeightedNormal> normals, const LobeTerms& t, size_t J) {
+  const size_t L = t.live.size(), chunks = (normals.size() + kChunk - 1) / kChunk;
   std::vector<Partial> partials(chunks);
   auto run = [&](int64_t c) {
     Partial& p = partials[size_t(c)];
-    p.mass.assign(J, 0.0);
-    p.moment.assign(J, Vec3::Zero());
-    std::vector<double> z(J);
+    p.mass.assign(L, 0.0);
+    p.moment.assign(L, Vec3::Zero());
+    double z[kVmfMaxLobes];
     const size_t end = std::min(normals.size(), size_t(c + 1) * kChunk);
     for (size_t i = size_t(c) * kChunk; i < end; ++i) {
       const WeightedNormal& wn = normals[i];
       p.log_likelihood += wn.w * responsibilities(t, wn.n, z);
-      for (size_t j = 0; j < J; ++j) {
-        if (z[j] == 0.0) continue;
-        p.mass[j] += wn.w * z[j];
-        p.moment[j] += (wn.w * z[j]) * wn.n;
+      for (size_t l = 0; l < L; ++l) {
+        if (z[l] == 0.0) continue;
+        const double wz = wn.w * z[l];
+        p.mass[l] += wz;
+        p.moment[l] += wz * wn.n;
       }
     }
   };
@@ -102,12 +99,14 @@ Partial e_step(std::span<const WeightedNormal> normals, const LobeTerms& t) {
     parallel_for(0, int64_t(chunks), run);
   else
     run(0);
-  Partial total = std::move(partials[0]);
-  for (size_t c = 1; c < chunks; ++c) {
+  Partial total;
+  total.mass.assign(J, 0.0);
+  total.moment.assign(J, Vec3::Zero());
+  for (size_t c = 0; c < chunks; ++c) {
     total.log_likelihood += partials[c].log_likelihood;
-    for (size_t j = 0; j < J; ++j) {
-      total.mass[j] += partials[c].mass[j];
-      total.moment[j] += partials[c].moment[j];
+    for (size_t l = 0; l < L; ++l) {
+      total.mass[t.live[l]] += partials[c].mass[l];
+      total.moment[t.live[l]] += partials[c].moment[l];
     }
   }
   return total;
@@ -131,11 +130,11 @@ double chunked_sum(size_t count, F&& term) {
   return total;
 }
 
-// log(e^a + e^b) without overflow.
+// log(e^a + e^b) without overflow; the smaller term is dropped when negligible (kNegligibleLog).
 double log_add(double a, double b) {
-  const double top = std::max(a, b);
-  if (top == -std::numeric_limits<double>::infinity()) return top;
-  return top + std::log1p(std::exp(std::min(a, b) - top));
+  const double top = std::max(a, b), d = std::min(a, b) - top;
+  if (top == -std::numeric_limits<double>::infinity() || d < kNegligibleLog) return top;
+  return top + std::log1p(std::exp(d));
 }
 
 // The collapse guard's re-seed (vmf_mixture.h): lobe `slot` (already emptied) goes to the best of the
@@ -156,32 +155,156 @@ void reseed(std::span<const WeightedNormal> normals, std::vector<VmfComponent>& 
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return log_p[a] < log_p[b]; });
   std::vector<size_t> candidates;
   double cumulative = 0.0;
+  // The normal at quantile q is the one whose interval of cumulative weight contains q (a heavy chunk can hold
+  // several).
   for (size_t r = 0, k = 0; r < N && k < kCandidates; ++r) {
-    if (cumulative >= double(k) / kCandidates) {
-      candidates.push_back(order[r]);
-      while (k < kCandidates && cumulative >= double(k) / kCandidates) ++k;
-    }
     cumulative += normals[order[r]].w;
+    if (cumulative > double(k) / kCandidates) {
+      candidates.push_back(order[r]);
+      while (k < kCandidates && cumulative > double(k) / kCandidates) ++k;
+    }
   }
   const double a = 1.0 / double(J), log_keep = std::log1p(-a), log_a = std::log(a);
-  size_t best = candidates[0];
+  Vec3 best = Vec3::UnitZ();
   double best_gain = -std::numeric_limits<double>::infinity(), best_kappa = kappa;
   for (size_t c : candidates) {
-    const Vec3 mu = normals[c].n;
+    // A chunk's mean (vmf_normal_chunks.h) is shorter than 1; a chunk of opposite normals has no direction.
+    const double length = normals[c].n.norm();
+    if (!(length > 0.0)) continue;
+    const Vec3 mu = normals[c].n / length;
     for (double k : {kappa, kappa_max}) {
+      const double log_peak = log_a + vmf_log_density(k, 1.0);  // log(a g(mu; k, mu))
       const double gain = chunked_sum(N, [&](size_t i) {
-        const double with = log_add(log_keep + log_p[i], log_a + vmf_log_density(k, mu.dot(normals[i].n)));
+        const double with = log_add(log_keep + log_p[i], log_peak + k * (mu.dot(normals[i].n) - 1.0));
         return normals[i].w * (with - log_p[i]);
       });
-      if (gain > best_gain) best_gain = gain, best = c, best_kappa = k;
+      if (gain > best_gain) best_gain = gain, best = mu, best_kappa = k;
     }
   }
   for (VmfComponent& c : mixture) c.alpha *= (1.0 - a) / live_alpha;
   VmfComponent& lobe = mixture[slot];
   lobe.alpha = a;
   lobe.kappa = best_kappa;
-  lobe.mu = normals[best].n;
+  lobe.mu = best;
   lobe.r = vmf_mean_length(best_kappa) * lobe.mu;
+}
+
+// The M-step from the sums of an E-step (vmf_mixture.h); a lobe whose mass is below kEmptyAmplitude is emptied.
+void m_step(const Partial& p, std::vector<VmfComponent>& mixture, const EmOptions& options,
+            std::span<const Vec3> align_targets) {
+  for (size_t j = 0; j < mixture.size(); ++j) {
+    VmfComponent& c = mixture[j];
+    if (c.alpha <= 0.0) continue;
+    if (p.mass[j] < kEmptyAmplitude) {
+      c = VmfComponent{};
+      continue;
+    }
+    c.alpha = p.mass[j];
+    c.r = p.moment[j] / p.mass[j];
+    set_lobe_from_resultant(c, options.kappa_max);
+    if (options.align > 0.0 && !align_targets.empty()) {
+      const Vec3 pulled = c.r + options.align * align_targets[j];  // [Han07] Eq. (7.26)
+      if (pulled.norm() > 0.0) c.mu = pulled.normalized();
+    }
+  }
+}
+
+// The SQUAREM extrapolation (vmf_mixture.h) of three successive EM states theta_0, theta_1 = M(theta_0),
+// theta_2 = M(theta_1) in the parameters (alpha_j, r_j) of their live lobes: theta_0 - 2 s d + s^2 v with
+// d = theta_1 - theta_0, v = theta_2 - 2 theta_1 + theta_0, s = -|d| / |v|, s moved halfway to -1 while a
+// lobe would get alpha <= 0 or |r| > 1. Amplitudes renormalised to sum 1. Empty when there is nothing to
+// extrapolate (s >= -1 gives theta_2 itself, or the live lobes differ).
+std::vector<VmfComponent> squarem_extrapolation(const std::vector<VmfComponent>& t0,
+                                                const std::vector<VmfComponent>& t1,
+                                                const std::vector<VmfComponent>& t2, double kappa_max) {
+  // Lobes at the kappa cap (atoms) are not extrapolated: they keep theta_2's parameters.
+  const auto held = [&](size_t j) { return std::max({t0[j].kappa, t1[j].kappa, t2[j].kappa}) >= kappa_max; };
+  double d2 = 0.0, v2 = 0.0;
+  for (size_t j = 0; j < t0.size(); ++j) {
+    const bool live = t0[j].alpha > 0.0;
+    if (live != (t1[j].alpha > 0.0) || live != (t2[j].alpha > 0.0)) return {};
+    if (!live || held(j)) continue;
+    const double da = t1[j].alpha - t0[j].alpha, va = t2[j].alpha - 2.0 * t1[j].alpha + t0[j].alpha;
+    d2 += da * da + (t1[j].r - t0[j].r).squaredNorm();
+    v2 += va * va + (t2[j].r - 2.0 * t1[j].r + t0[j].r).squaredNorm();
+  }
+  if (!(v2 > 0.0)) return {};
+  for (double s = -std::sqrt(d2 / v2); s < -1.0 - 1e-3; s = 0.5 * (s - 1.0)) {
+    std::vector<VmfComponent> out(t0.size());
+    bool valid = true;
+    double total = 0.0;
+    for (size_t j = 0; j < t0.size() && valid; ++j) {
+      if (!(t0[j].alpha > 0.0)) continue;
+      if (held(j)) {
+        out[j] = t2[j];
+        total += t2[j].alpha;
+        continue;
+      }
+      const auto step = [s](double a0, double a1, double a2) {
+        return a0 - 2.0 * s * (a1 - a0) + s * s * (a2 - 2.0 * a1 + a0);
+      };
+      VmfComponent& c = out[j];
+      c.alpha = step(t0[j].alpha, t1[j].alpha, t2[j].alpha);
+      for (int a = 0; a < 3; ++a) c.r[a] = step(t0[j].r[a], t1[j].r[a], t2[j].r[a]);
+      valid = c.alpha > 0.0 && c.r.squaredNorm() <= 1.0;
+      total += c.alpha;
+    }
+    if (!valid) continue;
+    for (size_t j = 0; j < out.size(); ++j)
+      if (out[j].alpha > 0.0) {
+        out[j].alpha /= total;
+        if (!held(j)) set_lobe_from_resultant(out[j], kappa_max);
+      }
+    return out;
+  }
+  return {};
+}
+
+struct FixedPoint {
+  int iterations = 0;           // E-steps
+  bool converged = false;       // the last plain step gained less than the tolerance
+  double log_likelihood = 0.0;  // of the last plain E-step
+};
+
+// EM from `mixture` until a plain step gains less than the tolerance or `budget` E-steps are spent; the result
+// is the M-step of the last E-step. Without alignment, accelerated by SQUAREM (vmf_mixture.h): two plain steps,
+// then the extrapolated state, kept (and stepped from) only if its log-likelihood is not below the last plain one.
+FixedPoint em_to_fixed_point(std::span<const WeightedNormal> normals, std::vector<VmfComponent>& mixture,
+                             const EmOptions& options, std::span<const Vec3> align_targets, int budget) {
+  const size_t J = mixture.size();
+  const bool accelerate = options.accelerate && !(options.align > 0.0 && !align_targets.empty());
+  FixedPoint point;
+  double previous = -std::numeric_limits<double>::infinity();
+  // A plain EM step; true at a fixed point (or with the budget spent).
+  const auto plain_step = [&]() {
+    const Partial p = e_step(normals, lobe_terms(mixture), J);
+    ++point.iterations;
+    point.log_likelihood = p.log_likelihood;
+    m_step(p, mixture, options, align_targets);
+    point.converged = p.log_likelihood - previous < options.tolerance;
+    previous = p.log_likelihood;
+    return point.converged || point.iterations >= budget;
+  };
+  while (true) {
+    const std::vector<VmfComponent> t0 = mixture;
+    if (plain_step() || !accelerate) {
+      if (point.converged || point.iterations >= budget) return point;
+      continue;
+    }
+    const std::vector<VmfComponent> t1 = mixture;
+    if (plain_step()) return point;
+    std::vector<VmfComponent> jump = squarem_extrapolation(t0, t1, mixture, options.kappa_max);
+    if (jump.empty()) continue;
+    const Partial p = e_step(normals, lobe_terms(jump), J);
+    ++point.iterations;
+    if (p.log_likelihood >= previous) {
+      m_step(p, jump, options, align_targets);
+      mixture = std::move(jump);
+      previous = p.log_likelihood;
+      point.log_likelihood = p.log_likelihood;
+    }
+    if (point.iterations >= budget) return point;
+  }
 }
 
 }  // namespace
@@ -204,46 +327,20 @@ EmReport fit_vmf_mixture(std::span<const WeightedNormal> normals, std::vector<Vm
     throw Error(ExitCode::runtime_failure, "internal: vMF fit started without a lobe");
   const size_t J = mixture.size();
   EmReport report;
-  int reseeds_left = int(J);
   std::vector<VmfComponent> before_reseed;  // the fixed point a trial re-seed must beat
-  double before_reseed_ll = 0.0;
-  double previous = -std::numeric_limits<double>::infinity();
-  for (int it = 0; it < options.max_iterations; ++it) {
-    const Partial p = e_step(normals, lobe_terms(mixture));
-    report.iterations = it + 1;
-    report.log_likelihood = p.log_likelihood;
-    // M-step.
-    for (size_t j = 0; j < J; ++j) {
-      VmfComponent& c = mixture[j];
-      if (c.alpha <= 0.0) continue;
-      if (p.mass[j] < kEmptyAmplitude) {
-        c = VmfComponent{};
-        continue;
-      }
-      c.alpha = p.mass[j];
-      c.r = p.moment[j] / p.mass[j];
-      set_lobe_from_resultant(c, options.kappa_max);
-      if (options.align > 0.0 && !align_targets.empty()) {
-        const Vec3 pulled = c.r + options.align * align_targets[j];  // [Han07] Eq. (7.26)
-        if (pulled.norm() > 0.0) c.mu = pulled.normalized();
-      }
+  for (int reseeds_left = int(J);;) {
+    const FixedPoint point =
+        em_to_fixed_point(normals, mixture, options, align_targets, options.max_iterations - report.iterations);
+    report.iterations += point.iterations;
+    report.converged = point.converged;
+    // A trial re-seed that did not end higher by `tolerance` is undone, and the guard stops.
+    if (!before_reseed.empty() && point.log_likelihood < report.log_likelihood + options.tolerance) {
+      mixture = std::move(before_reseed);
+      --report.reseeds;
+      report.converged = true;
+      break;
     }
-    const bool stalled = p.log_likelihood - previous < options.tolerance;
-    previous = p.log_likelihood;
-    if (!stalled && it + 1 < options.max_iterations) continue;
-    report.converged = stalled;
-    // A fixed point (or the budget spent). A trial re-seed that did not end higher by `tolerance` is undone, and
-    // the guard stops.
-    if (!before_reseed.empty()) {
-      if (p.log_likelihood < before_reseed_ll + options.tolerance) {
-        mixture = std::move(before_reseed);
-        report.log_likelihood = before_reseed_ll;
-        --report.reseeds;
-        report.converged = true;
-        break;
-      }
-      before_reseed.clear();
-    }
+    report.log_likelihood = point.log_likelihood;
     // The collapse guard: the weakest (smallest) live lobe gets a trial re-seed.
     size_t weakest = J, live = 0;
     for (size_t j = 0; j < J; ++j) {
@@ -251,14 +348,13 @@ EmReport fit_vmf_mixture(std::span<const WeightedNormal> normals, std::vector<Vm
       ++live;
       if (weakest == J || mixture[j].alpha < mixture[weakest].alpha) weakest = j;
     }
-    if (!options.reseed || weakest == J || live < 2 || reseeds_left == 0 || it + 1 == options.max_iterations) break;
+    if (!options.reseed || weakest == J || live < 2 || reseeds_left == 0 || report.iterations >= options.max_iterations)
+      break;
     before_reseed = mixture;
-    before_reseed_ll = p.log_likelihood;
     mixture[weakest] = VmfComponent{};
     reseed(normals, mixture, weakest, options.kappa_max);
     --reseeds_left;
     ++report.reseeds;
-    previous = -std::numeric_limits<double>::infinity();
   }
   // The amplitudes of the live lobes sum to the mass of the last E-step (1 up to rounding); renormalise so
   // that stored amplitudes sum to 1.
@@ -305,11 +401,13 @@ std::vector<double> lobe_features(std::span<const WeightedNormal> normals, std::
                                   int feature_count, const std::vector<VmfComponent>& mixture) {
   const size_t J = mixture.size(), F = size_t(feature_count);
   const LobeTerms t = lobe_terms(mixture);
-  std::vector<double> sum(J * F, 0.0), mass(J, 0.0), z(J);
+  std::vector<double> sum(J * F, 0.0), mass(J, 0.0);
+  double z[kVmfMaxLobes];
   for (size_t i = 0; i < normals.size(); ++i) {
     responsibilities(t, normals[i].n, z);
-    for (size_t j = 0; j < J; ++j) {
-      const double wz = normals[i].w * z[j];
+    for (size_t l = 0; l < t.live.size(); ++l) {
+      const size_t j = t.live[l];
+      const double wz = normals[i].w * z[l];
       mass[j] += wz;
       for (size_t f = 0; f < F; ++f) sum[j * F + f] += wz * features[i * F + f];  // [Han07] Eq. (7.25)
     }

@@ -11,8 +11,19 @@
 //           guarded Newton solve (not Alg. 7.1 line 12's closed form, which is up to ~5% off), capped at
 //           kappa_max (|r_j| -> 1 when the lobe's normals are identical);
 //           mu_j = normalize(r_j + C sum_k alpha_jk mu_jk) (Eq. 7.26; C = 0 gives Alg. 7.1 line 13).
-// Stopping: when the weighted mean log-likelihood sum_i w_i log g(n_i) rises by less than `tolerance` (or
-// after max_iterations). EM never lowers it for C = 0; with C > 0 a fall also stops it.
+// Stopping: when the weighted mean log-likelihood sum_i w_i log g(n_i) rises by less than `tolerance` in a plain
+// EM step (or after max_iterations E-steps). EM never lowers it for C = 0; with C > 0 a fall also stops it.
+// The E-step skips exp for terms more than 40 nats below the largest (0 to double precision).
+// Acceleration (deviation [Han07]; C = 0 only): SQUAREM (Varadhan and Roland 2008, scheme S3). From theta_0, two
+// plain steps give theta_1 = M(theta_0), theta_2 = M(theta_1) in the parameters (alpha_j, r_j); the jump
+// theta_0 - 2 s d + s^2 v (d = theta_1 - theta_0, v = theta_2 - 2 theta_1 + theta_0, s = -|d| / |v|, moved
+// halfway to -1 while a lobe would get alpha <= 0 or |r| > 1) is evaluated by an E-step and kept, with its
+// M-step, only if its log-likelihood is not below theta_1's; otherwise EM goes on from theta_2. So the
+// log-likelihood never falls, the fixed points are those of plain EM, and slow (linear) EM convergence takes
+// about half the E-steps (VmfMixture.AccelerationReachesThePlainFixedPointSooner). Lobes at the kappa cap
+// (atoms of identical normals) keep theta_2's parameters: a jump along their r moves them off the atom, and
+// on piecewise-constant maps it cost whole atoms their lobes.
+// Normals may be chunk means (|n| < 1, vmf_normal_chunks.h): the E- and M-steps then run chunked EM unchanged.
 // Empty lobes: a lobe whose amplitude falls below kEmptyAmplitude is emptied (alpha = 0, r = 0) and takes no
 // further part; a texel with fewer distinct normals than lobes keeps the extra lobes empty (test:
 // VmfMixture.MoreLobesThanDistinctNormals).
@@ -31,9 +42,10 @@
 // the trial is kept if the log-likelihood rose by at least `tolerance`, otherwise it is undone and the guard
 // stops. At most J trials per fit, and only with iterations left. The re-seed: with p(n_i) the density of the
 // remaining lobes, the candidates are the normals at weight quantiles 0, 1/16, ..., 15/16 of the normals sorted
-// by increasing p (the first is the worst-explained normal), each with kappa_s, the pooled concentration of the
-// live lobes A^-1(sum_l alpha_l |r_l| / sum_l alpha_l), or with kappa_max (a cluster of identical normals);
-// the pair that maximises the gain of a lobe of amplitude a = 1/J (the others scaled by 1 - a)
+// by increasing p (the normal at q is the one whose span of cumulative weight holds q, so a heavy chunk can be
+// a candidate; the first is the worst-explained normal; chunk means are normalised), each with kappa_s, the pooled
+// concentration of the live lobes A^-1(sum_l alpha_l |r_l| / sum_l alpha_l), or with kappa_max (a cluster of identical
+// normals); the pair that maximises the gain of a lobe of amplitude a = 1/J (the others scaled by 1 - a)
 //     G(c, kappa) = sum_i w_i log(1 - a + a g(n_i; kappa, n_c) / p(n_i))
 // is taken. So the guarded fit never ends below the unguarded one from the same start, a lobe on an isolated
 // outlier is moved to where it explains more (VmfMixture.OutlierGetsNoLobe), and a small lobe that is the
@@ -56,6 +68,8 @@ inline constexpr double kVmfKappaMax = 1e6;
 inline constexpr double kEmptyAmplitude = 1e-9;
 // Normals per chunk of the E-step's sums (the unit of its parallel split; partial sums are added in chunk order).
 inline constexpr size_t kVmfSumChunk = size_t(1) << 14;
+// Lobes per mixture at most.
+inline constexpr int kVmfMaxLobes = 16;
 // EM iterations at most per fit by default.
 inline constexpr int kVmfDefaultMaxIterations = 1000;
 
@@ -75,8 +89,9 @@ struct EmOptions {
   double tolerance = 1e-6;  // on the weighted mean log-likelihood (nats per normal)
   int max_iterations = kVmfDefaultMaxIterations;
   double kappa_max = kVmfKappaMax;
-  double align = 0.0;  // C of Eq. 7.26
-  bool reseed = true;  // the collapse guard (false: plain EM)
+  double align = 0.0;      // C of Eq. 7.26
+  bool reseed = true;      // the collapse guard (false: plain EM)
+  bool accelerate = true;  // SQUAREM steps (without alignment)
 };
 
 struct EmReport {

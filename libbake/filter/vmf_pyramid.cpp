@@ -10,6 +10,7 @@
 #include "formats/mip_levels.h"
 #include "libbake/core/parallel.h"
 #include "libbake/core/vmf_lobe.h"
+#include "libbake/filter/vmf_normal_chunks.h"
 
 namespace mbk {
 namespace {
@@ -90,6 +91,20 @@ std::vector<int> assign_slots(const std::vector<VmfComponent>& mixture, const st
     lobe_used[ba] = true;
   }
   return source;
+}
+
+// Whether two mixtures have the same lobes, in any order.
+bool same_lobes(const std::vector<VmfComponent>& a, const std::vector<VmfComponent>& b) {
+  const auto same = [](const VmfComponent& x, const VmfComponent& y) {
+    return x.alpha == y.alpha && x.kappa == y.kappa && x.mu == y.mu && x.r == y.r;
+  };
+  const auto contained = [&](const std::vector<VmfComponent>& from, const std::vector<VmfComponent>& in) {
+    return std::all_of(from.begin(), from.end(), [&](const VmfComponent& x) {
+      return std::count_if(from.begin(), from.end(), [&](const VmfComponent& y) { return same(x, y); }) ==
+             std::count_if(in.begin(), in.end(), [&](const VmfComponent& y) { return same(x, y); });
+    });
+  };
+  return a.size() == b.size() && contained(a, b);
 }
 
 // Decreasing amplitude, empty lobes last (stable: ties keep their order).
@@ -238,16 +253,38 @@ VmfPyramid build_vmf_pyramid(const NormalMap& map, const Image* features, const 
       gather(map, features, g, i, j, normals, y);
       // Two starts from the child lobes, the paper's farthest-apart seeds and the mass-weighted ones, each run
       // by plain EM to a fixed point; the better (the paper's on a tie) then continues with the collapse guard.
+      // A texel of more normals than max_chunks runs both on its chunks (vmf_normal_chunks.h), and the guarded fit
+      // then continues by plain EM on the normals themselves.
+      std::vector<WeightedNormal> chunks;
+      if (options.max_chunks > 0 && normals.size() > options.max_chunks)
+        chunks = vmf_normal_chunks(normals, options.max_chunks);
+      const std::span<const WeightedNormal> fitted = chunks.empty() ? std::span(normals) : std::span(chunks);
       const std::vector<VmfComponent> candidates = child_lobes(finer, xs, ys, J, kappa_max);
       std::vector<VmfComponent> mixture = farthest_apart_seeds(candidates, J, SeedRule::farthest);
       std::vector<VmfComponent> weighted = farthest_apart_seeds(candidates, J, SeedRule::mass_weighted);
-      EmOptions plain = options.em;
+      const std::vector<VmfComponent> mixture_before_fit = mixture;
+      // On chunks EM is cheap, and plain EM's path is kept (SQUAREM's jumps can pass an atom's basin by).
+      EmOptions plain = options.em, guarded = options.em;
       plain.reseed = false;
-      const EmReport first = fit_vmf_mixture(normals, mixture, plain);
-      const EmReport second = fit_vmf_mixture(normals, weighted, plain);
-      if (second.log_likelihood > first.log_likelihood) mixture = std::move(weighted);
-      reports[size_t(t)] = fit_vmf_mixture(normals, mixture, options.em);
-      reports[size_t(t)].iterations += first.iterations + second.iterations;
+      if (!chunks.empty()) plain.accelerate = guarded.accelerate = false;
+      const EmReport first = fit_vmf_mixture(fitted, mixture, plain);
+      int start_iterations = first.iterations;
+      if (!same_lobes(mixture_before_fit, weighted)) {  // the same seeds (in another order) would give the same fit
+        const EmReport second = fit_vmf_mixture(fitted, weighted, plain);
+        if (second.log_likelihood > first.log_likelihood) mixture = std::move(weighted);
+        start_iterations += second.iterations;
+      }
+      EmReport& report = reports[size_t(t)];
+      report = fit_vmf_mixture(fitted, mixture, guarded);
+      report.iterations += start_iterations;
+      if (!chunks.empty()) {
+        const EmReport guarded = report;
+        EmOptions polish = plain;
+        polish.accelerate = options.em.accelerate;
+        report = fit_vmf_mixture(normals, mixture, polish);
+        report.iterations += guarded.iterations;
+        report.reseeds = guarded.reseeds;
+      }
       store_mixture(mixture, &level.lobes[size_t(t) * J * 4]);
       if (F) store_features(mixture, lobe_features(normals, y, F, mixture), F, &level.features[size_t(t) * J * F]);
     });

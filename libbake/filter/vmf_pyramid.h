@@ -12,8 +12,12 @@
 //   [Han07]: farthest-point seeds alone favour outlying lobes of negligible mass, the weighted ones alone
 //   miss outlying facets; neither start is better on every map). Lobes coinciding with a chosen one are never
 //   chosen twice, so a texel with fewer distinct directions than J starts (and stays) with fewer lobes, the
-//   rest empty. Both starts run plain EM to a fixed point; the better one then continues with the collapse
-//   guard of vmf_mixture.h (trial re-seeds of the weakest lobe).
+//   rest empty. Both starts run plain EM to a fixed point (one start when both rules choose the same lobes); the
+//   better one then continues with the collapse guard of vmf_mixture.h (trial re-seeds of the weakest lobe).
+//   A texel of more than max_chunks normals runs all of that on chunks of its normals (vmf_normal_chunks.h:
+//   chunked EM, exact for the vMF's linear log density, its likelihood a lower bound) without SQUAREM (cheap
+//   there, and plain EM's path is kept), then EM continues, accelerated, on every finest normal: the stored
+//   lobes are a fixed point of the texel's own likelihood.
 // - Statistics per level: the mean log-likelihood per finest normal of the stored lobes (decoded from the
 //   floats, after the coherence pass), and the EM's iterations, converged fraction and re-seeds per texel.
 // - Coherence, from the top level down, texels of a level in anti-diagonal wavefronts (x + y = const, so left,
@@ -41,11 +45,14 @@
 namespace mbk {
 
 inline constexpr int kVmfDefaultLobes = 4;
-inline constexpr int kVmfMaxLobes = 16;
+
+// Chunks per texel at most for the coarse-level fits (vmf_normal_chunks.h).
+inline constexpr size_t kVmfDefaultMaxChunks = 1024;
 
 struct VmfBakeOptions {
   int lobes = kVmfDefaultLobes;
   EmOptions em;
+  size_t max_chunks = kVmfDefaultMaxChunks;  // texels of more normals fit chunks first; 0: never
 };
 
 struct VmfLevelStatistics {

@@ -3,7 +3,7 @@
 // stored lobes over every texel (the asset's statistic), and over up to SAMPLE evenly spaced texels the same for
 // the stored lobes and for the best of STARTS reference runs, with the EM statistics and the top texel's lobes.
 //
-//   bench_vmf_fit [--lobes J] [--max-iterations N] [--sample M] [--starts S] INPUT...
+//   bench_vmf_fit [--lobes J] [--max-iterations N] [--max-chunks C] [--sample M] [--starts S] INPUT...
 //   INPUT: gen:KIND:SIZE (`microbake gen KIND --size SIZE --seed 1`, in memory) or PATH.png[:-Y]
 #include <chrono>
 #include <cstdio>
@@ -44,6 +44,8 @@ int main(int argc, char** argv) {
       options.lobes = std::atoi(argv[++a]);
     } else if (arg == "--max-iterations" && a + 1 < argc) {
       options.em.max_iterations = std::atoi(argv[++a]);
+    } else if (arg == "--max-chunks" && a + 1 < argc) {
+      options.max_chunks = size_t(std::atol(argv[++a]));
     } else if (arg == "--sample" && a + 1 < argc) {
       sample = std::atoi(argv[++a]);
     } else if (arg == "--starts" && a + 1 < argc) {

@@ -11,6 +11,7 @@
 #include "libbake/core/parallel.h"
 #include "libbake/filter/vmf_asset.h"
 #include "libbake/filter/vmf_pyramid.h"
+#include "libbake/gen/generator.h"
 #include "tests/filter/filter_test_maps.h"
 
 namespace mbk {
@@ -98,6 +99,22 @@ TEST(VmfPyramid, SameBytesWhateverTheThreadCount) {
           .serialize();
   set_thread_count(0);
   EXPECT_EQ(one, two);
+}
+
+// A map large enough for every path: texels in parallel, chunked coarse texels, the top texel's E-step split.
+TEST(VmfPyramid, SameBytesWhateverTheThreadCountWithChunks) {
+  const LoadedNormalMap input =
+      test::loaded_map(generate_normal_map("leather", MapSize{256, 256}, 3, Progress::silent()));
+  const VmfBakeOptions options;
+  std::vector<std::vector<uint8_t>> bytes;
+  for (int threads : {1, 2}) {
+    set_thread_count(threads);
+    bytes.push_back(
+        vmf_asset_writer(input, nullptr, build_vmf_pyramid(input.map, nullptr, options, Progress::silent()), options)
+            .serialize());
+  }
+  set_thread_count(0);
+  EXPECT_EQ(bytes[0], bytes[1]);
 }
 
 TEST(VmfPyramid, MaterialFeaturesFollowTheirFacet) {
