@@ -10,7 +10,7 @@ brute force's largest N stays above e, the time is extrapolated along brute forc
 at N = 1 is already below e, the effect loses if it took longer than N = 1 and is undecided (faster, less
 accurate) otherwise.
 
-    python3 scripts/frontier_verdicts.py FRONTIER_DIR OUT_MD --machine TEXT --load TEXT --command TEXT
+    python3 scripts/frontier_verdicts.py FRONTIER_DIR OUT_MD --machine TEXT --command TEXT
 """
 import argparse
 import math
@@ -153,7 +153,6 @@ def main():
     parser.add_argument("frontier")
     parser.add_argument("out")
     parser.add_argument("--machine", required=True)
-    parser.add_argument("--load", required=True)
     parser.add_argument("--command", required=True)
     args = parser.parse_args()
     order = [t for t in TECHNIQUES if os.path.exists(os.path.join(args.frontier, t + ".dat"))]
@@ -174,8 +173,8 @@ def main():
     page += [f"- [{r}]({r})" for r in reports]
     page += ["", "## The frontier: each effect against brute force, at equal time", "",
              f"Command: `{args.command.strip()}` (Release build; measuring took "
-             f"{sum(int(h.get('measured_seconds', 0)) for h in headers)} s in all, see each technique; load "
-             f"average {args.load} of its last run; with technique names it measures only those again and rewrites this "
+             f"{sum(int(h.get('measured_seconds', 0)) for h in headers)} s in all, the load average while "
+             f"each technique ran under its heading; with technique names it measures only those again and rewrites this "
              f"page from every technique's data). Machine: {args.machine}, shared with other engineers' jobs, so "
              "absolute times are inflated and noisy (one run per point: a 10-20% difference between two settings "
              "is within the noise); ratios within one run are what to read.",

@@ -27,7 +27,6 @@ font=/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$out" "$work/generated"
-load_start=$(cut -d' ' -f1 /proc/loadavg)
 
 # The maps the scenes name under ../generated/, made here (the example scripts' commands and seeds).
 for kind in bumps leather panels; do "$exe" gen "$kind" --size 256 --seed 1 -q -o "$work/generated/$kind.png"; done
@@ -111,12 +110,12 @@ techniques=(
 # error is the RMSE of 6 x 6 pixel block means (how much light lands where).
 declare -A block=([glints]=6)
 
-# plot_frontier ID DATA PNG SIZE REF_N FLOOR BRUTE_NS [BLOCK]: RMSE against render time and against bytes read,
+# plot_frontier ID DATA PNG SIZE REF_N FLOOR Y_LOW BRUTE_NS [BLOCK]: RMSE against render time and against bytes read,
 # every setting's samples per pixel joined by a line, brute force's N x N rays likewise, the reference's noise
 # floor dashed; the legend once, beside the bytes plot.
 plot_frontier() {
-  local id=$1 data=$2 png=$3 size=$4 ref_n=$5 floor=$6 brute_ns=$7 metric="RMSE"
-  [ -n "${8:-}" ] && metric="RMSE of $8 x $8 pixel block means"
+  local id=$1 data=$2 png=$3 size=$4 ref_n=$5 floor=$6 y_low=$7 brute_ns=$8 metric="RMSE"
+  [ -n "${9:-}" ] && metric="RMSE of $9 x $9 pixel block means"
   gnuplot <<EOG
 set terminal pngcairo size 1200,460 font "DejaVu Sans,9" noenhanced
 set output "$png"
@@ -126,7 +125,7 @@ set grid
 set linetype 1 lc rgb "#1f77b4"; set linetype 2 lc rgb "#ff7f0e"; set linetype 3 lc rgb "#2ca02c"
 set linetype 4 lc rgb "#d62728"; set linetype 5 lc rgb "#9467bd"; set linetype 6 lc rgb "#8c564b"
 set linetype 7 lc rgb "#e377c2"; set linetype 8 lc rgb "#17becf"; set linetype 9 lc rgb "#bcbd22"
-set yrange [$floor * 0.7:*]
+set yrange [$y_low:*]
 set arrow 1 from graph 0, first $floor to graph 1, first $floor nohead dt 2 lc rgb "gray40"
 set ylabel "$metric (linear radiance)"
 set tmargin at screen 0.9
@@ -134,7 +133,7 @@ set bmargin at screen 0.12
 set lmargin at screen 0.07
 set rmargin at screen 0.40
 unset key
-set xlabel "render time (s, as render prints it); samples per pixel 1, 4, 16 from left to right"
+set xlabel "render time (s, as render prints it); lines join 1, 4, 16 samples per pixel"
 plot "$data" index 0 using 3:4 with linespoints lw 3 lc rgb "black" pt 7 ps 1.3, \\
      for [i=1:*] "$data" index i using 3:4 with linespoints lw 1.5 lt i pt (i+3) ps 1.2
 set lmargin at screen 0.47
@@ -210,21 +209,21 @@ done
 
 # The plots, from every technique's data (also those not measured again in this run).
 for data in "$out"/*.dat; do
-  read -r id size ref_n floor side brute_ns < <(python3 - "$data" <<'PY'
+  read -r id size ref_n floor side y_low brute_ns < <(python3 - "$data" <<'PY'
 import sys
 lines = open(sys.argv[1]).read().splitlines()
 words = lines[0][2:].split()
 h = dict(zip(words[0::2], words[1::2]))
 brute = [l.split()[1] for l in lines if l.startswith("brute ")]
-print(h["technique"], h["size"], h["reference"], h["floor"], h.get("block", "1"), " ".join(brute))
+low = min([float(h["floor"])] + [float(l.split()[3]) for l in lines if l and l[0] not in '#"'])
+print(h["technique"], h["size"], h["reference"], h["floor"], h.get("block", "1"), 0.7 * low, " ".join(brute))
 PY
   )
   [ "$side" = 1 ] && side=""
-  plot_frontier "$id" "$data" "$out/$id.png" "$size" "$ref_n" "$floor" "$brute_ns" "$side"
+  plot_frontier "$id" "$data" "$out/$id.png" "$size" "$ref_n" "$floor" "$y_low" "$brute_ns" "$side"
 done
 
 python3 scripts/frontier_verdicts.py "$out" "$results/README.md" \
   --machine "$(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //')" \
-  --load "$load_start at the start, $(cut -d' ' -f1 /proc/loadavg) at the end" \
-  --command "nice -n 5 bash scripts/report-frontier.sh $*"
+  --command "nice -n 5 bash scripts/report-frontier.sh $build"
 echo "report-frontier: wrote $results/README.md and $out/"
