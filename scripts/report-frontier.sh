@@ -106,6 +106,11 @@ techniques=(
   "glints|examples/scenes/glints.json|0.25crop|16|1 2 4 8 16|1 4 16|glints=keep;plain=none"
 )
 
+ids=" ${techniques[*]%%|*} "
+for name in "${only[@]}"; do
+  [[ "$ids" == *" $name "* ]] || { echo "report-frontier: unknown technique '$name' (one of:$ids)" >&2; exit 2; }
+done
+
 # Glints are sub-pixel sparkles: per pixel, even two 16 x 16 references differ by about their own RMSE, so their
 # error is the RMSE of 6 x 6 pixel block means (how much light lands where).
 declare -A block=([glints]=6)
