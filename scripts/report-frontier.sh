@@ -4,9 +4,10 @@
 # examples/scenes/filtering_plane.json and filtering_spheres.json with `gen bumps`), glints (glints.json),
 # colormap (colormap.json), crease (crease.json) and the demo (demo.json) - it bakes each setting's assets,
 # renders the effect at 1, 4 and 16 samples per pixel and `render --reference N` (brute force: N x N rays with
-# the raw maps) at N = 1, 2, 4, 8 (16 where affordable), and measures each render's time (the time `render`
+# the raw maps) at N = 1, 2, 4, 8, 16 where affordable (32 for glints), and measures each render's time (the time `render`
 # prints: scene, maps and assets loaded and the image rendered; process start-up and image writing excluded) and
-# its RMSE (`microbake compare --format json`) against a converged reference (`--reference R --seed 101`; its
+# its RMSE (`microbake compare --format json`) against a converged reference (`--reference R --seed 101`, R = 16;
+# colormap 12, glints 64; its
 # noise floor is a second one with `--seed 102` against it). Writes, under examples/results/frontier/, one plot
 # per scene (RMSE against time and against asset bytes, log-log, gnuplot) and a labelled picture strip per scene
 # (oiiotool --text), and the overview examples/results/README.md with the measured tables and, per technique,
@@ -103,7 +104,7 @@ techniques=(
   "demo|examples/scenes/demo.json|0.5|16|1 2 4 8 16|1 4 16|mip=\"mip\";toksvig=\"toksvig\";sh4={\"name\": \"sh\", \"order\": 4};vmf4=${vmf}4};plain=none"
   "crease|examples/scenes/crease.json|0.5|16|1 2 4 8 16|1 4 16|crease=keep;plain=none"
   "colormap|examples/scenes/colormap.json|0.4|12|1 2 4 8|1 4 16|filtered=keep;naive=set:{\"mode\": \"naive\"}"
-  "glints|examples/scenes/glints.json|0.25crop|16|1 2 4 8 16|1 4 16|glints=keep;plain=none"
+  "glints|examples/scenes/glints.json|0.25crop|64|1 2 4 8 16 32|1 4 16|glints=keep;plain=none"
 )
 
 ids=" ${techniques[*]%%|*} "
@@ -111,8 +112,8 @@ for name in "${only[@]}"; do
   [[ "$ids" == *" $name "* ]] || { echo "report-frontier: unknown technique '$name' (one of:$ids)" >&2; exit 2; }
 done
 
-# Glints are sub-pixel sparkles: per pixel, even two 16 x 16 references differ by about their own RMSE, so their
-# error is the RMSE of 6 x 6 pixel block means (how much light lands where).
+# Glints are sub-pixel sparkles: per pixel, two 16 x 16 references differ by about their own RMSE, so their error
+# is the RMSE of 6 x 6 pixel block means (how much light lands where), against a 64 x 64 reference.
 declare -A block=([glints]=6)
 
 # plot_frontier ID DATA PNG SIZE REF_N FLOOR Y_LOW BRUTE_NS [BLOCK]: RMSE against render time and against bytes read,
