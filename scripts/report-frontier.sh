@@ -4,15 +4,15 @@
 # examples/scenes/filtering_plane.json and filtering_spheres.json with `gen bumps`), glints (glints.json),
 # colormap (colormap.json), crease (crease.json) and the demo (demo.json) - it bakes each setting's assets,
 # renders the effect at 1, 4 and 16 samples per pixel and `render --reference N` (brute force: N x N rays with
-# the raw maps) at N = 1, 2, 4, 8, 16 where affordable (32 for glints), and measures each render's time (the time `render`
-# prints: scene, maps and assets loaded and the image rendered; process start-up and image writing excluded) and
-# its RMSE (`microbake compare --format json`) against a converged reference (`--reference R --seed 101`, R = 16;
-# colormap 12, glints 64; its
-# noise floor is a second one with `--seed 102` against it). Writes, under examples/results/frontier/, one plot
-# per scene (RMSE against time and against asset bytes, log-log, gnuplot) and a labelled picture strip per scene
-# (oiiotool --text), and the overview examples/results/README.md with the measured tables and, per technique,
-# where the effect beats brute force at equal time (scripts/frontier_verdicts.py). Some scenes are rendered
-# smaller than their example (camera scale below) to keep the run near 10 minutes on the shared 2-core machine.
+# the raw maps) at N = 1, 2, 4, 8, 16 where affordable (32 for glints), and measures each render's time (the time
+# `render` prints: scene, maps and assets loaded and the image rendered; process start-up and image writing
+# excluded) and its RMSE (`microbake compare --format json`) against a converged reference (`--reference R
+# --seed 101`, R = 16; colormap 12, glints 64; its noise floor is a second one with `--seed 102` against it).
+# Writes, under examples/results/frontier/, one plot per scene (RMSE against time and against asset bytes,
+# log-log, gnuplot) and a labelled picture strip per scene (oiiotool --text), and the overview
+# examples/results/README.md with the measured tables and, per technique, where the effect beats brute force at
+# equal time (scripts/frontier_verdicts.py). Some scenes are rendered smaller than their example (camera scale
+# below) to keep the run near 10 minutes on the shared 2-core machine.
 #
 #   nice -n 5 bash scripts/report-frontier.sh [BUILD_DIR [TECHNIQUE...]]   # default build/, every technique
 set -euo pipefail
