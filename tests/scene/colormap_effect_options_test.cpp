@@ -6,18 +6,14 @@
 #include "formats/error.h"
 #include "libbake/scene/effect_registry.h"
 #include "libbake/scene/scene.h"
+#include "tests/scene/scene_test_fixtures.h"
 
 namespace mbk {
 namespace {
 
 using nlohmann::json;
 
-json scene_with(const json& effect) {
-  return {{"camera", {{"position", {0, 1, 5}}, {"look_at", {0, 0, 0}}, {"width", 8}, {"height", 8}}},
-          {"shapes", {{{"type", "plane"}, {"size", {4, 4}}, {"material", "m"}}}},
-          {"materials", {{"m", {{"effects", {effect}}}}}},
-          {"lights", {{{"type", "sky"}, {"radiance", 1}}}}};
-}
+json scene_with(const json& effect) { return testing::one_material_scene({{"effects", {effect}}}); }
 
 Error option_error(const json& effect) {
   try {

@@ -9,6 +9,7 @@
 #include "libbake/scene/bake_plan.h"
 #include "libbake/scene/effect_registry.h"
 #include "libbake/scene/scene.h"
+#include "tests/scene/scene_test_fixtures.h"
 
 namespace mbk {
 namespace {
@@ -16,10 +17,7 @@ namespace {
 using nlohmann::json;
 
 json scene_with(const json& effects) {
-  return {{"camera", {{"position", {0, 1, 5}}, {"look_at", {0, 0, 0}}, {"width", 8}, {"height", 8}}},
-          {"shapes", {{{"type", "plane"}, {"size", {4, 4}}, {"material", "m"}}}},
-          {"materials", {{"m", {{"normal_map", {{"path", "maps/n.png"}}}, {"effects", effects}}}}},
-          {"lights", {{{"type", "sky"}, {"radiance", 1}}}}};
+  return testing::one_material_scene({{"normal_map", {{"path", "maps/n.png"}}}, {"effects", effects}});
 }
 
 std::vector<AssetRecipe> recipes_of(const json& effect) {

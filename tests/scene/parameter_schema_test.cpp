@@ -16,6 +16,7 @@
 #include "libbake/scene/scene.h"
 #include "libbake/scene/technique_parameters.h"
 #include "tests/image/cli_run.h"
+#include "tests/scene/scene_test_fixtures.h"
 
 namespace mbk {
 namespace {
@@ -23,10 +24,7 @@ namespace {
 using nlohmann::json;
 
 json scene_with(const json& effect) {
-  return {{"camera", {{"position", {0, 1, 5}}, {"look_at", {0, 0, 0}}, {"width", 8}, {"height", 8}}},
-          {"shapes", {{{"type", "plane"}, {"size", {4, 4}}, {"material", "m"}}}},
-          {"materials", {{"m", {{"normal_map", {{"path", "maps/n.png"}}}, {"effects", {effect}}}}}},
-          {"lights", {{{"type", "sky"}, {"radiance", 1}}}}};
+  return testing::one_material_scene({{"normal_map", {{"path", "maps/n.png"}}}, {"effects", {effect}}});
 }
 
 // The effect object with its required keys (the files) and `extra`.

@@ -71,6 +71,15 @@ inline nlohmann::json small_scene(const nlohmann::json& materials, uint32_t widt
   };
 }
 
+// The smallest scene around one material "m" (an 8 x 8 view of a plane under a sky): for tests that parse a
+// material's keys and effects without rendering.
+inline nlohmann::json one_material_scene(const nlohmann::json& material) {
+  return {{"camera", {{"position", {0, 1, 5}}, {"look_at", {0, 0, 0}}, {"width", 8}, {"height", 8}}},
+          {"shapes", {{{"type", "plane"}, {"size", {4, 4}}, {"material", "m"}}}},
+          {"materials", {{"m", material}}},
+          {"lights", {{{"type", "sky"}, {"radiance", 1}}}}};
+}
+
 inline void write_json(const std::filesystem::path& path, const nlohmann::json& j) { std::ofstream(path) << j.dump(2); }
 
 }  // namespace mbk::testing
