@@ -46,7 +46,7 @@ FootprintProbes footprint_probes(const Vec2& uv, const UvFootprint& f, uint32_t 
     return probes;
   }
   // M M^T = a a^T + b b^T = [[pxx, q], [q, pyy]]; its eigenvalues are s1^2 >= s2^2. s2^2 = det(M)^2 / s1^2 avoids
-  // the cancellation of (p + r - h) / 2 for thin ellipses.
+  // the cancellation of (pxx + pyy - h) / 2 for thin ellipses.
   const double pxx = a.x() * a.x() + b.x() * b.x(), pyy = a.y() * a.y() + b.y() * b.y();
   const double q = a.x() * a.y() + b.x() * b.y();
   const double h = std::hypot(pxx - pyy, 2.0 * q);
