@@ -30,15 +30,11 @@ class CompareCommand : public Command {
     max_rmse.max = std::numeric_limits<double>::max();
     max_rmse.doc = "Exit 6 when the RMSE is above this";
     add_parameter_option(app, max_rmse, options_.max_rmse);
-    Parameter block;
-    block.option = "--block";
-    block.min = 1;
-    block.max = 65536;
-    block.default_value = 8;
-    block.doc =
-        "Side in pixels of the blocks of the block_relative_l1 metric (sum |block mean IMAGE - block mean REFERENCE| / "
-        "sum |block mean REFERENCE|)";
-    add_parameter_option(app, block, options_.block);
+    add_parameter_option(app,
+                         integer_option("--block", 1, 65536, 8,
+                                        "Side in pixels of the blocks of the block_relative_l1 metric (sum |block mean "
+                                        "IMAGE - block mean REFERENCE| / sum |block mean REFERENCE|)"),
+                         options_.block);
   }
 
   int run() override {

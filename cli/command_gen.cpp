@@ -47,12 +47,7 @@ class GenCommand : public Command {
     app.add_option("--size", options_.size, "Size in texels: N (square) or WxH")
         ->type_name("N|WxH")
         ->default_val("512");
-    Parameter seed;
-    seed.option = "--seed";
-    seed.max = 4294967295.0;
-    seed.default_value = 1;
-    seed.doc = "Random seed";
-    add_parameter_option(app, seed, options_.seed);
+    add_parameter_option(app, integer_option("--seed", 0, 4294967295.0, 1, "Random seed"), options_.seed);
     app.add_option("--creases", options_.creases.path,
                    "panels only: also write the exact crease lines as a curves file (.json) for `microbake crease`")
         ->type_name("FILE");

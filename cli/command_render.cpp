@@ -21,37 +21,23 @@ class RenderCommand : public Command {
   void add_options(CLI::App& app) override {
     app.add_option("SCENE", options_.scene, "Scene file (JSON)")->required();
     add_output_option(app, options_.output, "rendered image (.exr: linear float; .png: clamped, sRGB-encoded 8-bit)");
-    Parameter spp;
-    spp.option = "--spp";
-    spp.min = 1;
-    spp.max = 65536;
-    spp.default_value = 1;
-    spp.doc = "Samples per pixel, stratified (render mode)";
-    spp_option_ = add_parameter_option(app, spp, options_.spp);
-    Parameter reference;
-    reference.option = "--reference";
-    reference.min = 1;
-    reference.max = 256;
-    reference.doc =
-        "Ground truth instead: N x N sub-pixel rays per pixel with unfiltered normals from the raw maps (no assets)";
-    add_parameter_option(app, reference, options_.reference);
-    Parameter seed;
-    seed.option = "--seed";
-    seed.max = 4294967295.0;
-    seed.default_value = 0;
-    seed.doc =
-        "Seed of the reference's sub-pixel jitter: two references with different seeds measure its own noise floor "
-        "(render mode samples each cell's centre)";
-    add_parameter_option(app, seed, options_.seed);
-    Parameter max_probes;
-    max_probes.option = "--max-probes";
-    max_probes.min = 1;
-    max_probes.max = kMaxFootprintProbes;
-    max_probes.default_value = options_.max_probes;
-    max_probes.doc =
-        "Anisotropic filtering: at most this many probes along a footprint's major axis per filtered lookup (render "
-        "mode; 1 = isotropic)";
-    add_parameter_option(app, max_probes, options_.max_probes);
+    spp_option_ = add_parameter_option(
+        app, integer_option("--spp", 1, 65536, 1, "Samples per pixel, stratified (render mode)"), options_.spp);
+    add_parameter_option(app,
+                         integer_option("--reference", 1, 256, nullptr,
+                                        "Ground truth instead: N x N sub-pixel rays per pixel with unfiltered normals "
+                                        "from the raw maps (no assets)"),
+                         options_.reference);
+    add_parameter_option(app,
+                         integer_option("--seed", 0, 4294967295.0, 0,
+                                        "Seed of the reference's sub-pixel jitter: two references with different seeds "
+                                        "measure its own noise floor (render mode samples each cell's centre)"),
+                         options_.seed);
+    add_parameter_option(app,
+                         integer_option("--max-probes", 1, kMaxFootprintProbes, options_.max_probes,
+                                        "Anisotropic filtering: at most this many probes along a footprint's major "
+                                        "axis per filtered lookup (render mode; 1 = isotropic)"),
+                         options_.max_probes);
     app.add_option("--assets", options_.assets,
                    "Folder of baked assets (default: <scene folder>/<scene stem>.assets, as 'bake' writes)")
         ->type_name("DIR");

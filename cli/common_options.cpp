@@ -36,12 +36,9 @@ void RunOptions::apply() const {
 }
 
 void add_run_options(CLI::App& app, RunOptions& o) {
-  Parameter threads;
-  threads.option = "--threads";
-  threads.max = 1024;
-  threads.default_value = 0;
-  threads.doc = "Worker threads (0 = all cores); outputs do not depend on it";
-  add_parameter_option(app, threads, o.threads);
+  add_parameter_option(
+      app, integer_option("--threads", 0, 1024, 0, "Worker threads (0 = all cores); outputs do not depend on it"),
+      o.threads);
   app.add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
   Parameter progress;
   progress.option = "--progress";

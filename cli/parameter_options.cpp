@@ -1,7 +1,19 @@
 // Options from parameter declarations (see parameter_options.h).
 #include "cli/parameter_options.h"
 
+#include <utility>
+
 namespace mbk::cli {
+
+Parameter integer_option(std::string option, double min, double max, nlohmann::json default_value, std::string doc) {
+  Parameter p;
+  p.option = std::move(option);
+  p.min = min;
+  p.max = max;
+  p.default_value = std::move(default_value);
+  p.doc = std::move(doc);
+  return p;
+}
 
 CLI::Validator parameter_validator(const Parameter& p) {
   // No description: help shows parameter_label() instead of CLI11's own text.

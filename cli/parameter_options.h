@@ -15,6 +15,10 @@
 
 namespace mbk::cli {
 
+// A command's own integer option (not a technique's parameter): values in [min, max], the default (null: none) and
+// the help line.
+Parameter integer_option(std::string option, double min, double max, nlohmann::json default_value, std::string doc);
+
 // The check of a value against its declaration (parse_parameter_text); a choice is rewritten to its canonical
 // spelling, so `--format JSON` means json.
 CLI::Validator parameter_validator(const Parameter& p);
