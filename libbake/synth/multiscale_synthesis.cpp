@@ -19,6 +19,7 @@ constexpr uint32_t kMaxLevel = 40;
 struct Pixel {
   uint32_t e = 0, k = 0, x = 0, y = 0;  // texel pointer
   float R[4] = {0, 0, 0, 0};            // cumulative transfer offset
+  float loop[4] = {0, 0, 0, 0};         // the share of R that loop transitions added (fades: loop_transitions.h)
 };
 
 struct Region {
@@ -114,10 +115,16 @@ class Synthesizer {
         // on a, an odd child 2a + 1 between a and a + 1 at weight 1/4 on a + 1.
         const int64_t px = floor_div2(x) - ((x & 1) == 0 ? 1 : 0), py = floor_div2(y) - ((y & 1) == 0 ? 1 : 0);
         const double ax = (x & 1) == 0 ? 0.75 : 0.25, ay = (y & 1) == 0 ? 0.75 : 0.25;
-        for (uint32_t ch = 0; ch < C; ++ch)
-          c.R[ch] = float(
-              (1 - ax) * (1 - ay) * at(parents, pr, px, py).R[ch] + ax * (1 - ay) * at(parents, pr, px + 1, py).R[ch] +
-              (1 - ax) * ay * at(parents, pr, px, py + 1).R[ch] + ax * ay * at(parents, pr, px + 1, py + 1).R[ch]);
+        const Pixel &p00 = at(parents, pr, px, py), &p10 = at(parents, pr, px + 1, py),
+                    &p01 = at(parents, pr, px, py + 1), &p11 = at(parents, pr, px + 1, py + 1);
+        const double w00 = (1 - ax) * (1 - ay), w10 = ax * (1 - ay), w01 = (1 - ax) * ay, w11 = ax * ay;
+        for (uint32_t ch = 0; ch < C; ++ch) {
+          const double R = w00 * p00.R[ch] + w10 * p10.R[ch] + w01 * p01.R[ch] + w11 * p11.R[ch];
+          const double loop = w00 * p00.loop[ch] + w10 * p10.loop[ch] + w01 * p01.loop[ch] + w11 * p11.loop[ch];
+          // The loop share fades (loop_transitions.h); exact when there is none.
+          c.R[ch] = float(R - (1.0 - kLoopOffsetKept) * loop);
+          c.loop[ch] = float(kLoopOffsetKept * loop);
+        }
       }
     });
     return children;
@@ -244,7 +251,11 @@ class Synthesizer {
           best.k = k;
           best.x = wrap(cx, m);
           best.y = wrap(cy, m);
-          for (uint32_t c = 0; c < C; ++c) best.R[c] = self.R[c] + b[c];
+          const bool loop = loops_.target(self.e, self.k, e, k) > 0.0;
+          for (uint32_t c = 0; c < C; ++c) {
+            best.R[c] = self.R[c] + b[c];
+            best.loop[c] = loop ? self.loop[c] + b[c] : self.loop[c];
+          }
         };
         for (int dy = -1; dy <= 1; ++dy)
           for (int dx = -1; dx <= 1; ++dx) {
