@@ -16,6 +16,9 @@ namespace {
 constexpr int kReach = 2;  // the 5 x 5 neighbourhood's radius
 constexpr uint32_t kMaxLevel = 40;
 
+constexpr int kLanes = 4;                // candidates whose errors are summed side by side
+constexpr uint32_t kMaxCandidates = 16;  // K at most (formats/graph_layout.h)
+
 struct Pixel {
   uint32_t e = 0, k = 0, x = 0, y = 0;  // texel pointer
   float R[4] = {0, 0, 0, 0};            // cumulative transfer offset
@@ -31,7 +34,15 @@ struct Region {
 
 int64_t floor_div2(int64_t v) { return v >= 0 ? v / 2 : -((-v + 1) / 2); }
 
-uint32_t wrap(int64_t v, uint32_t m) { return uint32_t(((v % int64_t(m)) + m) % m); }
+// v mod m for the power-of-two exemplar side m (formats/graph_layout.h checks it), also for negative v.
+uint32_t wrap(int64_t v, uint32_t m) { return uint32_t(uint64_t(v) & (m - 1)); }
+
+// A texel competing in correction: pointer, transfer offset and the contrast a loop matches at (0: no loop).
+struct Candidate {
+  uint32_t e, k, x, y;
+  const float* b;
+  double contrast;
+};
 
 class Synthesizer {
  public:
@@ -41,7 +52,16 @@ class Synthesizer {
         L_(g.layout.levels - 1),
         admissible_(admissible_levels(g.layout.exemplars, g.layout.edges, g.layout.levels)),
         loops_(loop_contrast_of_stacks(g.stacks.data(), g.layout.exemplars, g.layout.levels, g.layout.side,
-                                       g.layout.channels)) {}
+                                       g.layout.channels)),
+        admits_stride_(size_t(g.layout.exemplars) * g.layout.levels),
+        admits_(admits_stride_ * admits_stride_, 0) {
+    const uint32_t levels = g.layout.levels;
+    for (uint32_t i = 0; i < g.layout.exemplars; ++i)
+      for (uint32_t k = 0; k < levels; ++k)
+        for (const StackLevel& l : admissible_[i][k])
+          if (loop_transition_allowed(i, k, l.exemplar, l.level, L_))
+            admits_[(size_t(i) * levels + k) * admits_stride_ + size_t(l.exemplar) * levels + l.level] = 1;
+  }
 
   Image run(Progress& progress, SynthesisStatistics* stats) {
     const Region window{o_.x, o_.y, o_.x + o_.width, o_.y + o_.height};
@@ -150,45 +170,49 @@ class Synthesizer {
   }
 
   // The synthesized 5 x 5 neighbourhood of p in p's own colour space: E(S[p + Delta]) + R_{p + Delta} - R_p.
-  void neighbourhood(const std::vector<Pixel>& s, const Region& r, int64_t x, int64_t y, float* out) const {
+  void neighbourhood(const std::vector<Pixel>& s, const Region& r, int64_t x, int64_t y, double* out) const {
     const uint32_t C = g_.layout.channels;
     const Pixel& self = at(s, r, x, y);
     for (int dy = -kReach; dy <= kReach; ++dy)
       for (int dx = -kReach; dx <= kReach; ++dx) {
         const Pixel& q = at(s, r, x + dx, y + dy);
-        for (uint32_t c = 0; c < C; ++c) *out++ = value(q.e, q.k, q.x, q.y, c) + q.R[c] - self.R[c];
+        for (uint32_t c = 0; c < C; ++c) *out++ = float(value(q.e, q.k, q.x, q.y, c) + q.R[c] - self.R[c]);
       }
   }
 
-  // Eq. 5.1 for the candidate texel (e, k, cx, cy) with offset b, against the neighbourhood n; the sum stops once
-  // it reaches `bound` (the candidate can no longer win: only a strictly smaller error replaces the best).
-  double error(const float* n, uint32_t e, uint32_t k, int64_t cx, int64_t cy, const float* b,
+  // Eq. 5.1 for the candidate texel (e, k, cx, cy) with offset b, against the neighbourhood n (as doubles); the sum
+  // stops once it reaches `bound` (the candidate can no longer win: only a strictly smaller error replaces the best).
+  double error(const double* n, uint32_t e, uint32_t k, int64_t cx, int64_t cy, const float* b,
                double bound = std::numeric_limits<double>::infinity(), double contrast = 0.0) const {
     const uint32_t m = g_.layout.side, C = g_.layout.channels;
     const int64_t h = spacing(k);
+    const float* level = &g_.stacks[g_.texel(e, k, 0, 0) * C];
+    size_t column[2 * kReach + 1], row[2 * kReach + 1];  // the toroidal sample lines, in floats from `level`
+    for (int d = -kReach; d <= kReach; ++d) {
+      column[d + kReach] = size_t(wrap(cx + d * h, m)) * C;
+      row[d + kReach] = size_t(wrap(cy + d * h, m)) * m * C;
+    }
     if (contrast > 0.0) {  // a loop transition (loop_transitions.h)
       float d[25 * 4];
       float* out = d;
-      for (int dy = -kReach; dy <= kReach; ++dy)
-        for (int dx = -kReach; dx <= kReach; ++dx) {
-          const uint32_t vx = wrap(cx + dx * h, m), vy = wrap(cy + dy * h, m);
-          for (uint32_t c = 0; c < C; ++c) *out++ = value(e, k, vx, vy, c);
-        }
+      for (size_t y : row)
+        for (size_t x : column)
+          for (uint32_t c = 0; c < C; ++c) *out++ = level[y + x + c];
       bring_to_contrast(d, C, contrast);
       double sum = 0.0;
       for (uint32_t j = 0; j < 25 * C; ++j) {
-        const double diff = double(n[j]) - (d[j] + b[j % C]);
+        const double diff = n[j] - (d[j] + b[j % C]);
         sum += diff * diff;
         if (sum >= bound) return sum;
       }
       return sum;
     }
     double sum = 0.0;
-    for (int dy = -kReach; dy <= kReach; ++dy)
-      for (int dx = -kReach; dx <= kReach; ++dx) {
-        const uint32_t vx = wrap(cx + dx * h, m), vy = wrap(cy + dy * h, m);
+    for (size_t y : row)
+      for (size_t x : column) {
+        const float* v = level + y + x;
         for (uint32_t c = 0; c < C; ++c) {
-          const double d = double(*n++) - (value(e, k, vx, vy, c) + b[c]);
+          const double d = *n++ - (v[c] + b[c]);
           sum += d * d;
         }
         if (sum >= bound) return sum;
@@ -196,38 +220,124 @@ class Synthesizer {
     return sum;
   }
 
+  // The index of the first candidate of least Eq. 5.1 error (-1 for none). The pixel's own texel (first) is summed
+  // alone; later candidates without a loop transform in groups of kLanes, each sum in the order error() sums and
+  // stopped once every lane reached the best error of the earlier groups: the same sums, so the same winner, as
+  // evaluating them one by one.
+  int first_best(const double* n, const Candidate* competing, int count) const {
+    double best_error = std::numeric_limits<double>::infinity();
+    int best = -1;
+    for (int i = 0; i < count;) {
+      const Candidate& c = competing[i];
+      if (i == 0 || c.contrast > 0.0) {
+        const double err = error(n, c.e, c.k, c.x, c.y, c.b, best_error, c.contrast);
+        if (err < best_error) best_error = err, best = i;
+        ++i;
+        continue;
+      }
+      int lanes = 0;
+      while (lanes < kLanes && i + lanes < count && competing[i + lanes].contrast == 0.0) ++lanes;
+      double err[kLanes];
+      lane_errors(n, competing + i, lanes, best_error, err);
+      for (int j = 0; j < lanes; ++j)
+        if (err[j] < best_error) best_error = err[j], best = i + j;
+      i += lanes;
+    }
+    return best;
+  }
+
+  // error() of up to kLanes candidates side by side (no loop transform), each stopped (at a value >= bound) once all
+  // have reached bound.
+  void lane_errors(const double* n, const Candidate* c, int lanes, double bound, double* out) const {
+    switch (g_.layout.channels) {  // the channel count as a constant: unrolled sample loops
+      case 1:
+        return lane_errors<1>(n, c, lanes, bound, out);
+      case 2:
+        return lane_errors<2>(n, c, lanes, bound, out);
+      case 3:
+        return lane_errors<3>(n, c, lanes, bound, out);
+      default:
+        return lane_errors<4>(n, c, lanes, bound, out);
+    }
+  }
+  template <uint32_t C>
+  void lane_errors(const double* n, const Candidate* c, int lanes, double bound, double* out) const {
+    const uint32_t m = g_.layout.side;
+    const float* row[kLanes][2 * kReach + 1];  // each lane's toroidal sample rows and columns
+    size_t column[kLanes][2 * kReach + 1];
+    const float* b[kLanes];
+    for (int l = 0; l < kLanes; ++l) {
+      const Candidate& cl = c[std::min(l, lanes - 1)];  // spare lanes repeat the last candidate
+      const int64_t h = spacing(cl.k);
+      const float* level = &g_.stacks[g_.texel(cl.e, cl.k, 0, 0) * C];
+      for (int d = -kReach; d <= kReach; ++d) {
+        row[l][d + kReach] = level + size_t(wrap(cl.y + d * h, m)) * m * C;
+        column[l][d + kReach] = size_t(wrap(cl.x + d * h, m)) * C;
+      }
+      b[l] = cl.b;
+    }
+    double sum[kLanes] = {};
+    for (int dy = 0; dy < 2 * kReach + 1; ++dy)
+      for (int dx = 0; dx < 2 * kReach + 1; ++dx, n += C) {
+        for (int l = 0; l < kLanes; ++l) {
+          const float* v = row[l][dy] + column[l][dx];
+          for (uint32_t ch = 0; ch < C; ++ch) {
+            const double d = n[ch] - (v[ch] + b[l][ch]);
+            sum[l] += d * d;
+          }
+        }
+        bool all = true;
+        for (int l = 0; l < kLanes; ++l) all = all && sum[l] >= bound;
+        if (all) {
+          for (int l = 0; l < lanes; ++l) out[l] = sum[l];
+          return;
+        }
+      }
+    for (int l = 0; l < lanes; ++l) out[l] = sum[l];
+  }
+
+  // One sub-pass: the pixels of one parity read the level as it was before it and are written after it.
   void correct(std::vector<Pixel>& s, const Region& r, int parity, bool output_level) const {
     const uint32_t m = g_.layout.side, C = g_.layout.channels, K = g_.layout.candidates;
-    const std::vector<Pixel> old = s;
     const float zero[4] = {0, 0, 0, 0};
+    // The corrected pixels of this parity, two to a row and column apart: row (y - y0) / 2, column (x - x0) / 2.
+    const int64_t stride = r.width() / 2 + 1;
+    std::vector<Pixel> corrected(size_t((r.height() / 2 + 1) * stride));
     parallel_for(r.y0, r.y1, [&](int64_t y) {
       if (((y & 1) << 1 | 0) != (parity & 2)) return;
-      float n[25 * 4];
+      double n[25 * 4];
       for (int64_t x = r.x0; x < r.x1; ++x) {
         if ((x & 1) != (parity & 1)) continue;
-        neighbourhood(old, r, x, y, n);
-        const Pixel& self = at(old, r, x, y);
+        neighbourhood(s, r, x, y, n);
+        const Pixel* around[9];  // the 3 x 3 neighbours, row by row (around[4] is the pixel)
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) around[(dy + 1) * 3 + dx + 1] = &at(s, r, x + dx, y + dy);
+        const Pixel& self = *around[4];
+        const uint32_t* admits = &admits_[(size_t(self.e) * g_.layout.levels + self.k) * admits_stride_];
         // Only texels of the admissible levels of the pixel's level compete (Sec. 5.2.1.2): at an exemplar's
         // finest level that excludes the pixel's own texel, so correction moves it on to a finer exemplar (or,
         // through a loop, back up its own stack) instead of getting stuck; a level with no admissible level
         // keeps its pixel.
+        const auto allowed = [&](uint32_t e, uint32_t k) {
+          return admits[size_t(e) * g_.layout.levels + k] != 0 ||
+                 (output_level && e == self.e && k == L_ && self.k == L_);
+        };
         Pixel best = self;
         // Deviation [Han08]: a texel one of the 8 neighbours already holds on the same level is not taken (a
         // coherent neighbour holds a texel one spacing away; the same texel twice magnifies it, and a region of one
         // texel is its own best match at every later level: issue 18's plateaus).
         const auto held_by_neighbour = [&](uint32_t e, uint32_t k, uint32_t tx, uint32_t ty) {
-          for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx) {
-              if (dx == 0 && dy == 0) continue;
-              const Pixel& q = at(old, r, x + dx, y + dy);
-              if (q.e == e && q.k == k && q.x == tx && q.y == ty) return true;
-            }
+          for (int i = 0; i < 9; ++i) {
+            const Pixel& q = *around[i];
+            if (i != 4 && q.e == e && q.k == k && q.x == tx && q.y == ty) return true;
+          }
           return false;
         };
-        double best_error =
-            allowed(self, self.e, self.k, output_level) && !held_by_neighbour(self.e, self.k, self.x, self.y)
-                ? error(n, self.e, self.k, self.x, self.y, zero)
-                : std::numeric_limits<double>::infinity();
+        // The competing candidates in the order that breaks ties (Eq. 5.1: the earliest wins), the pixel's own first.
+        Candidate competing[1 + 8 + 9 * kMaxCandidates];
+        int count = 0;
+        if (allowed(self.e, self.k) && !held_by_neighbour(self.e, self.k, self.x, self.y))
+          competing[count++] = {self.e, self.k, self.x, self.y, zero, 0.0};
         // Coherent neighbours often propose the same texel with the same offset: evaluate each once.
         struct Seen {
           uint32_t e, k, x, y;
@@ -236,7 +346,7 @@ class Synthesizer {
         Seen seen[64] = {{self.e, self.k, self.x, self.y, zero}};
         int seen_count = 1;
         const auto consider = [&](uint32_t e, uint32_t k, int64_t cx, int64_t cy, const float* b) {
-          if (!allowed(self, e, k, output_level)) return;
+          if (!allowed(e, k)) return;
           const uint32_t wx = wrap(cx, m), wy = wrap(cy, m);
           for (int i = 0; i < seen_count; ++i)
             if (seen[i].e == e && seen[i].k == k && seen[i].x == wx && seen[i].y == wy &&
@@ -244,22 +354,11 @@ class Synthesizer {
               return;
           if (seen_count < 64) seen[seen_count++] = {e, k, wx, wy, b};
           if (held_by_neighbour(e, k, wx, wy)) return;
-          const double err = error(n, e, k, cx, cy, b, best_error, loops_.target(self.e, self.k, e, k));
-          if (!(err < best_error)) return;
-          best_error = err;
-          best.e = e;
-          best.k = k;
-          best.x = wrap(cx, m);
-          best.y = wrap(cy, m);
-          const bool loop = loops_.target(self.e, self.k, e, k) > 0.0;
-          for (uint32_t c = 0; c < C; ++c) {
-            best.R[c] = self.R[c] + b[c];
-            best.loop[c] = loop ? self.loop[c] + b[c] : self.loop[c];
-          }
+          competing[count++] = {e, k, wx, wy, b, loops_.target(self.e, self.k, e, k)};
         };
         for (int dy = -1; dy <= 1; ++dy)
           for (int dx = -1; dx <= 1; ++dx) {
-            const Pixel& q = at(old, r, x + dx, y + dy);
+            const Pixel& q = *around[(dy + 1) * 3 + dx + 1];
             const int64_t hq = spacing(q.k);
             if (dx != 0 || dy != 0) consider(q.e, q.k, int64_t(q.x) - dx * hq, int64_t(q.y) - dy * hq, zero);
             const size_t slots = g_.texel(q.e, q.k, q.x, q.y) * K;
@@ -271,8 +370,26 @@ class Synthesizer {
               consider(cand[0], cand[1], int64_t(cand[2]) - dx * hl, int64_t(cand[3]) - dy * hl, b);
             }
           }
-        s[size_t((y - r.y0) * r.width() + (x - r.x0))] = best;
+        const int winner = first_best(n, competing, count);
+        if (winner >= 0) {
+          const Candidate& w = competing[winner];
+          best.e = w.e;
+          best.k = w.k;
+          best.x = w.x;
+          best.y = w.y;
+          for (uint32_t c = 0; c < C; ++c) {
+            best.R[c] = self.R[c] + w.b[c];
+            best.loop[c] = w.contrast > 0.0 ? self.loop[c] + w.b[c] : self.loop[c];
+          }
+        }
+        corrected[size_t((y - r.y0) / 2 * stride + (x - r.x0) / 2)] = best;
       }
+    });
+    parallel_for(r.y0, r.y1, [&](int64_t y) {
+      if (((y & 1) << 1 | 0) != (parity & 2)) return;
+      for (int64_t x = r.x0; x < r.x1; ++x)
+        if ((x & 1) == (parity & 1))
+          s[size_t((y - r.y0) * r.width() + (x - r.x0))] = corrected[size_t((y - r.y0) / 2 * stride + (x - r.x0) / 2)];
     });
   }
 
@@ -280,7 +397,7 @@ class Synthesizer {
     std::vector<double> rows(size_t(r.height()), 0.0);
     const float zero[4] = {0, 0, 0, 0};
     parallel_for(r.y0, r.y1, [&](int64_t y) {
-      float n[25 * 4];
+      double n[25 * 4];
       for (int64_t x = r.x0; x < r.x1; ++x) {
         neighbourhood(s, r, x, y, n);
         const Pixel& p = at(s, r, x, y);
@@ -296,18 +413,15 @@ class Synthesizer {
   // edge of r >= 1).
   bool stuck(const Pixel& p) const { return p.k == L_ && admissible_[p.e][L_].empty(); }
 
-  bool allowed(const Pixel& at, uint32_t e, uint32_t k, bool output_level) const {
-    if (output_level && e == at.e && k == L_ && at.k == L_) return true;
-    if (!loop_transition_allowed(at.e, at.k, e, k, L_)) return false;
-    const auto& set = admissible_[at.e][at.k];
-    return std::find(set.begin(), set.end(), StackLevel{e, k}) != set.end();
-  }
-
   const GraphTables& g_;
   const SynthesisOptions& o_;
   uint32_t L_;
   std::vector<std::vector<std::vector<StackLevel>>> admissible_;
   LoopContrast loops_;
+  // Whether correction may move a pixel of (i, k) to (j, l): admissible (Sec. 5.2.1.2) and not a loop below the
+  // finest level (loop_transitions.h); [(i * levels + k) * admits_stride_ + j * levels + l].
+  size_t admits_stride_;
+  std::vector<uint32_t> admits_;
 };
 
 }  // namespace
