@@ -173,11 +173,16 @@ class Synthesizer {
   void neighbourhood(const std::vector<Pixel>& s, const Region& r, int64_t x, int64_t y, double* out) const {
     const uint32_t C = g_.layout.channels;
     const Pixel& self = at(s, r, x, y);
-    for (int dy = -kReach; dy <= kReach; ++dy)
-      for (int dx = -kReach; dx <= kReach; ++dx) {
-        const Pixel& q = at(s, r, x + dx, y + dy);
-        for (uint32_t c = 0; c < C; ++c) *out++ = float(value(q.e, q.k, q.x, q.y, c) + q.R[c] - self.R[c]);
+    int64_t column[2 * kReach + 1];  // clamped to the region, as at()
+    for (int d = -kReach; d <= kReach; ++d) column[d + kReach] = std::clamp(x + d, r.x0, r.x1 - 1) - r.x0;
+    for (int dy = -kReach; dy <= kReach; ++dy) {
+      const Pixel* row = &s[size_t((std::clamp(y + dy, r.y0, r.y1 - 1) - r.y0) * r.width())];
+      for (int64_t cx : column) {
+        const Pixel& q = row[cx];
+        const float* v = &g_.stacks[g_.texel(q.e, q.k, q.x, q.y) * C];
+        for (uint32_t c = 0; c < C; ++c) *out++ = float(v[c] + q.R[c] - self.R[c]);
       }
+    }
   }
 
   // Eq. 5.1 for the candidate texel (e, k, cx, cy) with offset b, against the neighbourhood n (as doubles); the sum
@@ -326,34 +331,35 @@ class Synthesizer {
         // Deviation [Han08]: a texel one of the 8 neighbours already holds on the same level is not taken (a
         // coherent neighbour holds a texel one spacing away; the same texel twice magnifies it, and a region of one
         // texel is its own best match at every later level: issue 18's plateaus).
-        const auto held_by_neighbour = [&](uint32_t e, uint32_t k, uint32_t tx, uint32_t ty) {
-          for (int i = 0; i < 9; ++i) {
-            const Pixel& q = *around[i];
-            if (i != 4 && q.e == e && q.k == k && q.x == tx && q.y == ty) return true;
-          }
-          return false;
+        uint64_t held[8];  // the 8 neighbours' texels (texel_key)
+        for (int i = 0, j = 0; i < 9; ++i)
+          if (i != 4) held[j++] = texel_key(around[i]->e, around[i]->k, around[i]->x, around[i]->y);
+        const auto held_by_neighbour = [&](uint64_t key) {
+          bool found = false;
+          for (uint64_t h : held) found |= h == key;
+          return found;
         };
         // The competing candidates in the order that breaks ties (Eq. 5.1: the earliest wins), the pixel's own first.
         Candidate competing[1 + 8 + 9 * kMaxCandidates];
         int count = 0;
-        if (allowed(self.e, self.k) && !held_by_neighbour(self.e, self.k, self.x, self.y))
+        const uint64_t self_key = texel_key(self.e, self.k, self.x, self.y);
+        if (allowed(self.e, self.k) && !held_by_neighbour(self_key))
           competing[count++] = {self.e, self.k, self.x, self.y, zero, 0.0};
         // Coherent neighbours often propose the same texel with the same offset: evaluate each once.
         struct Seen {
-          uint32_t e, k, x, y;
+          uint64_t key;
           const float* b;
         };
-        Seen seen[64] = {{self.e, self.k, self.x, self.y, zero}};
+        Seen seen[64] = {{self_key, zero}};
         int seen_count = 1;
         const auto consider = [&](uint32_t e, uint32_t k, int64_t cx, int64_t cy, const float* b) {
           if (!allowed(e, k)) return;
           const uint32_t wx = wrap(cx, m), wy = wrap(cy, m);
+          const uint64_t key = texel_key(e, k, wx, wy);
           for (int i = 0; i < seen_count; ++i)
-            if (seen[i].e == e && seen[i].k == k && seen[i].x == wx && seen[i].y == wy &&
-                (seen[i].b == b || std::equal(b, b + C, seen[i].b)))
-              return;
-          if (seen_count < 64) seen[seen_count++] = {e, k, wx, wy, b};
-          if (held_by_neighbour(e, k, wx, wy)) return;
+            if (seen[i].key == key && (seen[i].b == b || std::equal(b, b + C, seen[i].b))) return;
+          if (seen_count < 64) seen[seen_count++] = {key, b};
+          if (held_by_neighbour(key)) return;
           competing[count++] = {e, k, wx, wy, b, loops_.target(self.e, self.k, e, k)};
         };
         for (int dy = -1; dy <= 1; ++dy)
@@ -407,6 +413,11 @@ class Synthesizer {
     double sum = 0.0;
     for (double v : rows) sum += v;  // serial, in row order: deterministic
     return sum / double(s.size());
+  }
+
+  // One number per texel pointer: texel coordinates below 2^12 (formats/graph_layout.h), levels below 2^8.
+  static uint64_t texel_key(uint32_t e, uint32_t k, uint32_t x, uint32_t y) {
+    return uint64_t(e) << 32 | uint64_t(k) << 24 | uint64_t(y) << 12 | x;
   }
 
   // At its exemplar's finest level with nowhere to go (no admissible level there: the exemplar has no outgoing
