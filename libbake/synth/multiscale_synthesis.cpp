@@ -313,10 +313,12 @@ class Synthesizer {
       double n[25 * 4];
       for (int64_t x = r.x0; x < r.x1; ++x) {
         if ((x & 1) != (parity & 1)) continue;
-        neighbourhood(s, r, x, y, n);
         const Pixel* around[9];  // the 3 x 3 neighbours, row by row (around[4] is the pixel)
         for (int dy = -1; dy <= 1; ++dy)
           for (int dx = -1; dx <= 1; ++dx) around[(dy + 1) * 3 + dx + 1] = &at(s, r, x + dx, y + dy);
+        for (const Pixel* q : around)  // their candidate slots are read below: fetched while n is gathered
+          __builtin_prefetch(&g_.candidates[g_.texel(q->e, q->k, q->x, q->y) * K * 4]);
+        neighbourhood(s, r, x, y, n);
         const Pixel& self = *around[4];
         const uint32_t* admits = &admits_[(size_t(self.e) * g_.layout.levels + self.k) * admits_stride_];
         // Only texels of the admissible levels of the pixel's level compete (Sec. 5.2.1.2): at an exemplar's
@@ -350,7 +352,8 @@ class Synthesizer {
           uint64_t key;
           const float* b;
         };
-        Seen seen[64] = {{self_key, zero}};
+        Seen seen[64];
+        seen[0] = {self_key, zero};
         int seen_count = 1;
         const auto consider = [&](uint32_t e, uint32_t k, int64_t cx, int64_t cy, const float* b) {
           if (!allowed(e, k)) return;
