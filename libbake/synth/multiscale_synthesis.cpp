@@ -225,16 +225,16 @@ class Synthesizer {
     return sum;
   }
 
-  // The index of the first candidate of least Eq. 5.1 error (-1 for none). The pixel's own texel (first) is summed
-  // alone; later candidates without a loop transform in groups of kLanes, each sum in the order error() sums and
-  // stopped once every lane reached the best error of the earlier groups: the same sums, so the same winner, as
-  // evaluating them one by one.
+  // The index of the first candidate of least Eq. 5.1 error (-1 for none). Consecutive candidates without a loop
+  // transform are summed in groups of kLanes, each sum in the order error() sums, and a group stops once every lane
+  // has reached the best error of the earlier groups (a candidate there cannot win): the same sums, so the same
+  // winner, as evaluating them one by one; the independent sums side by side keep the floating-point units busy.
   int first_best(const double* n, const Candidate* competing, int count) const {
     double best_error = std::numeric_limits<double>::infinity();
     int best = -1;
     for (int i = 0; i < count;) {
       const Candidate& c = competing[i];
-      if (i == 0 || c.contrast > 0.0) {
+      if (c.contrast > 0.0) {
         const double err = error(n, c.e, c.k, c.x, c.y, c.b, best_error, c.contrast);
         if (err < best_error) best_error = err, best = i;
         ++i;
@@ -251,8 +251,8 @@ class Synthesizer {
     return best;
   }
 
-  // error() of up to kLanes candidates side by side (no loop transform), each stopped (at a value >= bound) once all
-  // have reached bound.
+  // error() of up to kLanes candidates side by side (no loop transform), stopped (at values >= bound) after the first
+  // row of samples at which all have reached bound.
   void lane_errors(const double* n, const Candidate* c, int lanes, double bound, double* out) const {
     switch (g_.layout.channels) {  // the channel count as a constant: unrolled sample loops
       case 1:
@@ -282,8 +282,8 @@ class Synthesizer {
       b[l] = cl.b;
     }
     double sum[kLanes] = {};
-    for (int dy = 0; dy < 2 * kReach + 1; ++dy)
-      for (int dx = 0; dx < 2 * kReach + 1; ++dx, n += C) {
+    for (int dy = 0; dy < 2 * kReach + 1; ++dy) {
+      for (int dx = 0; dx < 2 * kReach + 1; ++dx, n += C)
         for (int l = 0; l < kLanes; ++l) {
           const float* v = row[l][dy] + column[l][dx];
           for (uint32_t ch = 0; ch < C; ++ch) {
@@ -291,13 +291,10 @@ class Synthesizer {
             sum[l] += d * d;
           }
         }
-        bool all = true;
-        for (int l = 0; l < kLanes; ++l) all = all && sum[l] >= bound;
-        if (all) {
-          for (int l = 0; l < lanes; ++l) out[l] = sum[l];
-          return;
-        }
-      }
+      bool all = true;  // checked once a row
+      for (int l = 0; l < kLanes; ++l) all = all && sum[l] >= bound;
+      if (all) break;
+    }
     for (int l = 0; l < lanes; ++l) out[l] = sum[l];
   }
 
