@@ -23,6 +23,7 @@ struct Pixel {
   uint32_t e = 0, k = 0, x = 0, y = 0;  // texel pointer
   float R[4] = {0, 0, 0, 0};            // cumulative transfer offset
   float loop[4] = {0, 0, 0, 0};         // the share of R that loop transitions added (fades: loop_transitions.h)
+  bool magnified = false;               // its parent was stuck at the finest level (see stuck())
 };
 
 struct Region {
@@ -126,7 +127,8 @@ class Synthesizer {
         c.e = parent.e;
         c.k = std::min(parent.k + 1, L_);
         // A pixel stuck at its exemplar's finest level magnifies it: its children keep its texel (h < 1).
-        const double h = stuck(parent) ? 0.0 : spacing(c.k);
+        c.magnified = stuck(parent);
+        const double h = c.magnified ? 0.0 : spacing(c.k);
         const double dx = (x - 2 * floor_div2(x)) - 0.5, dy = (y - 2 * floor_div2(y)) - 0.5;
         c.x = wrap(int64_t(parent.x) + int64_t(std::floor(h * dx)), m);
         c.y = wrap(int64_t(parent.y) + int64_t(std::floor(h * dy)), m);
@@ -324,7 +326,7 @@ class Synthesizer {
         // keeps its pixel.
         const auto allowed = [&](uint32_t e, uint32_t k) {
           return admits[size_t(e) * g_.layout.levels + k] != 0 ||
-                 (output_level && e == self.e && k == L_ && self.k == L_);
+                 (output_level && e == self.e && k == L_ && self.k == L_ && !self.magnified);
         };
         Pixel best = self;
         // Deviation [Han08]: a texel one of the 8 neighbours already holds on the same level is not taken (a

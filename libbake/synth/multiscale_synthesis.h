@@ -28,11 +28,12 @@
 //     fades by half per level (loop_transitions.h). Deviation [Han08]: a candidate texel that one of the pixel's 8
 //     neighbours already holds on the same level is not taken (the same texel twice is a magnification, and a region of
 //     one texel is its own best match at every later level: issue 18). Deviation [Han08]: at the output level T a pixel
-//     at its exemplar's finest level may also keep a texel of that level (its own, or a neighbour's shifted). The
-//     thesis never admits E_L, so that correction moves on to finer scales; at T there is no finer level to move on to,
-//     and forcing the move there shows every window that reaches an exemplar's own scale through its coarser neighbour
-//     (a self-loop window at the exemplar's scale showed the exemplar minified 2x and blurred: 3% of leather's block
-//     variance, 73% of bumps'; issue 18).
+//     at its exemplar's finest level may also keep a texel of that level (its own, or a neighbour's shifted), unless
+//     it is a magnification (its parent was stuck there already: correction would shuffle the magnified texels into a
+//     grid of squares). The thesis never admits E_L, so that correction moves on to finer scales; at T there is no
+//     finer level to move on to, and forcing the move there shows every window that reaches an exemplar's own scale
+//     through its coarser neighbour (a self-loop window at the exemplar's scale showed the exemplar minified 2x and
+//     blurred: 3% of leather's block variance, 73% of bumps'; issue 18).
 // Window independence: level t is computed on the requested region grown by 2 pixels per sub-pass (the 5 x 5
 // reach), whose parents are computed the same way; reads beyond a region clamp to it and only affect pixels that
 // are discarded, so every output pixel is a function of its position alone (tests: tiles vs whole, 1 vs 2 threads).
