@@ -5,14 +5,19 @@
 # (examples/results/synth/*.png: the chain at three levels, a zoom sequence of 16x steps, the root alone) and the
 # numbers: analysis time, final-level megapixels per second on 2 threads and on 1, an 8k x 8k synthesis as 16 tiles
 # of 2048 x 2048 (time, peak memory of one tile, tiles equal to the whole where they overlap a checked window), and
-# the detail the chain adds over synthesis of the root alone (RMSE between a window and its 2x box blur, oiiotool).
+# the detail the chain adds over synthesis of the root alone (RMSE between a window and its 2x box blur, oiiotool),
+# and the speed against a baseline revision's microbake (built into build-baseline/, ccache makes it quick): the
+# same window at level 10 of the chain, synthesis plus EXR write, the two binaries run in turn three times (the
+# median of each; the machine is shared), and their files compared byte for byte.
 # Rewrites the synth block of examples/results/synth/REPORT.md.
 #
-#   bash scripts/report-synth.sh [BUILD_DIR]        # default build/ (a Release build); about 5 minutes on 2 cores
+#   bash scripts/report-synth.sh [BUILD_DIR [BASELINE_REV]]   # default build/ (a Release build) and 146033a (main
+#                                                             # before issue 18's speed work); ~10 minutes on 2 cores
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/report-block.sh
 build="${1:-build}"
+baseline_rev="${2:-146033a}"
 exe="$build/microbake"
 [ -x "$exe" ] || { echo "report: $exe not found (build first: scripts/build.sh $build)" >&2; exit 2; }
 command -v oiiotool >/dev/null || { echo "report: oiiotool is needed (scripts/install-deps.sh installs it)" >&2; exit 2; }
@@ -37,7 +42,9 @@ window() {  # level, size, centre at level 6 (x, y) -> X,Y,W,H
 }
 for t in 6 8 10; do "$exe" synth "$work/chain.mbk" --level $t --window "$(window $t 256 100 60)" -q -o "$out/chain_level$t.png"; done
 for t in 6 10 14 18 22; do "$exe" synth "$work/zoom.mbk" --level $t --window "$(window $t 256 100 60)" -q -o "$out/zoom_level$t.png"; done
-oiiotool examples/generated/synth_bumps64.png --resize:filter=box 256x256 -o "$out/zoom_exemplar.png"  # 4x, nearest
+# The exemplar at its own scale (a texel a pixel, as every level of the zoom adds it), 4 x 4 tiles: 256 x 256.
+bumps=examples/generated/synth_bumps64.png
+oiiotool $(for i in $(seq 16); do echo "$bumps"; done) --mosaic 4x4 -o "$out/zoom_exemplar.png"
 # The plateau table (issue 18): the SelfLoopZoom tests print their statistics per level and origin.
 zoom_table=$("$build/tests/microbake_tests" --gtest_filter='SelfLoopZoom.*' 2>&1 | grep -E '^(bumps|leather|  level)' || true)
 "$exe" synth "$work/root_alone.mbk" --level 10 --window "$(window 10 256 100 60)" -q -o "$out/root_alone_level10.png"
@@ -48,6 +55,26 @@ two=$("$exe" synth "$work/chain.mbk" --level 10 --window "$big" --threads 2 -o "
 one=$("$exe" synth "$work/chain.mbk" --level 10 --window "$big" --threads 1 -o "$work/chain_big1.exr")
 cmp "$work/chain_big.exr" "$work/chain_big1.exr"  # the same bytes whatever the thread count
 alone=$("$exe" synth "$work/root_alone.mbk" --level 10 --window "$big" -o "$work/alone_big.exr")
+
+# Against the baseline: the baseline revision's sources in build-baseline/src (its build in build-baseline/src/build,
+# so ccache's relative paths match an ordinary build), rebuilt only when the revision changes.
+base_src=build-baseline/src
+if [ "$(cat build-baseline/revision 2>/dev/null)" != "$(git rev-parse "$baseline_rev")" ] || [ ! -x "$base_src/build/microbake" ]; then
+  rm -rf build-baseline && mkdir -p "$base_src"
+  git archive "$baseline_rev" | tar -x -C "$base_src"
+  cmake -S "$base_src" -B "$base_src/build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$base_src/build" --target microbake -j "$(nproc)" >/dev/null
+  git rev-parse "$baseline_rev" > build-baseline/revision
+fi
+with_write() { sed -n 's/.*synthesis \([0-9.e-]*\) s (.*write \([0-9.e-]*\) s.*/\1 \2/p' | awk '{print $1 + $2}'; }
+median() { sort -g | sed -n 2p; }
+for i in 1 2 3; do
+  "$base_src/build/microbake" synth "$work/chain.mbk" --level 10 --window "$big" --threads 2 -o "$work/base.exr" | with_write >> "$work/base_s"
+  "$exe" synth "$work/chain.mbk" --level 10 --window "$big" --threads 2 -o "$work/now.exr" | with_write >> "$work/now_s"
+done
+cmp "$work/base.exr" "$work/now.exr"  # the same bytes as the baseline
+base_s=$(median < "$work/base_s")
+now_s=$(median < "$work/now_s")
 # Detail at the finest octave: each window against its own 2x box blur.
 detail() {
   oiiotool "$1" --resize:filter=box 50% --resize:filter=triangle 200% -o "$work/blur.exr"
@@ -95,6 +122,8 @@ sub-passes, jitter 1, 0.6, 0.4, 0.3, ...).
 | analysis (\`microbake graph\`), chain / zoom / root alone | ${analysis_chain} s / ${analysis_zoom} s / ${analysis_root_alone} s |
 | chain, 1024 x 1024 at level 10, 2 threads | $(echo "$two" | seconds) s, $(echo "$two" | mps) megapixels/s |
 | chain, 1024 x 1024 at level 10, 1 thread | $(echo "$one" | seconds) s, $(echo "$one" | mps) megapixels/s (same bytes as 2 threads) |
+| chain, 1024 x 1024 at level 10, 2 threads, synthesis + EXR write (median of 3) | ${now_s} s, $(python3 -c "print('%.3f' % (1024 * 1024 / 1e6 / $now_s))") megapixels/s |
+| the same with the baseline's microbake (${baseline_rev}), run in turn | ${base_s} s: this build $(python3 -c "print('%.2f' % ($base_s / $now_s))")x as fast, the same bytes |
 | threads speed-up, 2 / 1 | $(python3 -c "print('%.2f' % ($(echo "$two" | mps) / $(echo "$one" | mps)))") |
 | root alone, the same window | $(echo "$alone" | seconds) s, $(echo "$alone" | mps) megapixels/s |
 | detail at the finest octave (RMSE of the window against its 2x box blur): chain / root alone | ${detail_chain} / ${detail_alone} ($(python3 -c "print('%.1f' % ($detail_chain / $detail_alone))")x) |

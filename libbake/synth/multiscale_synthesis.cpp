@@ -16,9 +16,14 @@ namespace {
 constexpr int kReach = 2;  // the 5 x 5 neighbourhood's radius
 constexpr uint32_t kMaxLevel = 40;
 
+constexpr int kLanes = 4;                // candidates whose errors are summed side by side
+constexpr uint32_t kMaxCandidates = 16;  // K at most (formats/graph_layout.h)
+
 struct Pixel {
   uint32_t e = 0, k = 0, x = 0, y = 0;  // texel pointer
   float R[4] = {0, 0, 0, 0};            // cumulative transfer offset
+  float loop[4] = {0, 0, 0, 0};         // the share of R that loop transitions added (fades: loop_transitions.h)
+  bool magnified = false;               // its parent was stuck at the finest level (see stuck())
 };
 
 struct Region {
@@ -30,7 +35,15 @@ struct Region {
 
 int64_t floor_div2(int64_t v) { return v >= 0 ? v / 2 : -((-v + 1) / 2); }
 
-uint32_t wrap(int64_t v, uint32_t m) { return uint32_t(((v % int64_t(m)) + m) % m); }
+// v mod m for the power-of-two exemplar side m (formats/graph_layout.h checks it), also for negative v.
+uint32_t wrap(int64_t v, uint32_t m) { return uint32_t(uint64_t(v) & (m - 1)); }
+
+// A texel competing in correction: pointer, transfer offset and the contrast a loop matches at (0: no loop).
+struct Candidate {
+  uint32_t e, k, x, y;
+  const float* b;
+  double contrast;
+};
 
 class Synthesizer {
  public:
@@ -40,7 +53,16 @@ class Synthesizer {
         L_(g.layout.levels - 1),
         admissible_(admissible_levels(g.layout.exemplars, g.layout.edges, g.layout.levels)),
         loops_(loop_contrast_of_stacks(g.stacks.data(), g.layout.exemplars, g.layout.levels, g.layout.side,
-                                       g.layout.channels)) {}
+                                       g.layout.channels)),
+        admits_stride_(size_t(g.layout.exemplars) * g.layout.levels),
+        admits_(admits_stride_ * admits_stride_, 0) {
+    const uint32_t levels = g.layout.levels;
+    for (uint32_t i = 0; i < g.layout.exemplars; ++i)
+      for (uint32_t k = 0; k < levels; ++k)
+        for (const StackLevel& l : admissible_[i][k])
+          if (loop_transition_allowed(i, k, l.exemplar, l.level, L_))
+            admits_[(size_t(i) * levels + k) * admits_stride_ + size_t(l.exemplar) * levels + l.level] = 1;
+  }
 
   Image run(Progress& progress, SynthesisStatistics* stats) {
     const Region window{o_.x, o_.y, o_.x + o_.width, o_.y + o_.height};
@@ -105,7 +127,8 @@ class Synthesizer {
         c.e = parent.e;
         c.k = std::min(parent.k + 1, L_);
         // A pixel stuck at its exemplar's finest level magnifies it: its children keep its texel (h < 1).
-        const double h = stuck(parent) ? 0.0 : spacing(c.k);
+        c.magnified = stuck(parent);
+        const double h = c.magnified ? 0.0 : spacing(c.k);
         const double dx = (x - 2 * floor_div2(x)) - 0.5, dy = (y - 2 * floor_div2(y)) - 0.5;
         c.x = wrap(int64_t(parent.x) + int64_t(std::floor(h * dx)), m);
         c.y = wrap(int64_t(parent.y) + int64_t(std::floor(h * dy)), m);
@@ -114,10 +137,16 @@ class Synthesizer {
         // on a, an odd child 2a + 1 between a and a + 1 at weight 1/4 on a + 1.
         const int64_t px = floor_div2(x) - ((x & 1) == 0 ? 1 : 0), py = floor_div2(y) - ((y & 1) == 0 ? 1 : 0);
         const double ax = (x & 1) == 0 ? 0.75 : 0.25, ay = (y & 1) == 0 ? 0.75 : 0.25;
-        for (uint32_t ch = 0; ch < C; ++ch)
-          c.R[ch] = float(
-              (1 - ax) * (1 - ay) * at(parents, pr, px, py).R[ch] + ax * (1 - ay) * at(parents, pr, px + 1, py).R[ch] +
-              (1 - ax) * ay * at(parents, pr, px, py + 1).R[ch] + ax * ay * at(parents, pr, px + 1, py + 1).R[ch]);
+        const Pixel &p00 = at(parents, pr, px, py), &p10 = at(parents, pr, px + 1, py),
+                    &p01 = at(parents, pr, px, py + 1), &p11 = at(parents, pr, px + 1, py + 1);
+        const double w00 = (1 - ax) * (1 - ay), w10 = ax * (1 - ay), w01 = (1 - ax) * ay, w11 = ax * ay;
+        for (uint32_t ch = 0; ch < C; ++ch) {
+          const double R = w00 * p00.R[ch] + w10 * p10.R[ch] + w01 * p01.R[ch] + w11 * p11.R[ch];
+          const double loop = w00 * p00.loop[ch] + w10 * p10.loop[ch] + w01 * p01.loop[ch] + w11 * p11.loop[ch];
+          // The loop share fades (loop_transitions.h); exact when there is none.
+          c.R[ch] = float(R - (1.0 - kLoopOffsetKept) * loop);
+          c.loop[ch] = float(kLoopOffsetKept * loop);
+        }
       }
     });
     return children;
@@ -143,45 +172,54 @@ class Synthesizer {
   }
 
   // The synthesized 5 x 5 neighbourhood of p in p's own colour space: E(S[p + Delta]) + R_{p + Delta} - R_p.
-  void neighbourhood(const std::vector<Pixel>& s, const Region& r, int64_t x, int64_t y, float* out) const {
+  void neighbourhood(const std::vector<Pixel>& s, const Region& r, int64_t x, int64_t y, double* out) const {
     const uint32_t C = g_.layout.channels;
     const Pixel& self = at(s, r, x, y);
-    for (int dy = -kReach; dy <= kReach; ++dy)
-      for (int dx = -kReach; dx <= kReach; ++dx) {
-        const Pixel& q = at(s, r, x + dx, y + dy);
-        for (uint32_t c = 0; c < C; ++c) *out++ = value(q.e, q.k, q.x, q.y, c) + q.R[c] - self.R[c];
+    int64_t column[2 * kReach + 1];  // clamped to the region, as at()
+    for (int d = -kReach; d <= kReach; ++d) column[d + kReach] = std::clamp(x + d, r.x0, r.x1 - 1) - r.x0;
+    for (int dy = -kReach; dy <= kReach; ++dy) {
+      const Pixel* row = &s[size_t((std::clamp(y + dy, r.y0, r.y1 - 1) - r.y0) * r.width())];
+      for (int64_t cx : column) {
+        const Pixel& q = row[cx];
+        const float* v = &g_.stacks[g_.texel(q.e, q.k, q.x, q.y) * C];
+        for (uint32_t c = 0; c < C; ++c) *out++ = float(v[c] + q.R[c] - self.R[c]);
       }
+    }
   }
 
-  // Eq. 5.1 for the candidate texel (e, k, cx, cy) with offset b, against the neighbourhood n; the sum stops once
-  // it reaches `bound` (the candidate can no longer win: only a strictly smaller error replaces the best).
-  double error(const float* n, uint32_t e, uint32_t k, int64_t cx, int64_t cy, const float* b,
+  // Eq. 5.1 for the candidate texel (e, k, cx, cy) with offset b, against the neighbourhood n (as doubles); the sum
+  // stops once it reaches `bound` (the candidate can no longer win: only a strictly smaller error replaces the best).
+  double error(const double* n, uint32_t e, uint32_t k, int64_t cx, int64_t cy, const float* b,
                double bound = std::numeric_limits<double>::infinity(), double contrast = 0.0) const {
     const uint32_t m = g_.layout.side, C = g_.layout.channels;
     const int64_t h = spacing(k);
+    const float* level = &g_.stacks[g_.texel(e, k, 0, 0) * C];
+    size_t column[2 * kReach + 1], row[2 * kReach + 1];  // the toroidal sample lines, in floats from `level`
+    for (int d = -kReach; d <= kReach; ++d) {
+      column[d + kReach] = size_t(wrap(cx + d * h, m)) * C;
+      row[d + kReach] = size_t(wrap(cy + d * h, m)) * m * C;
+    }
     if (contrast > 0.0) {  // a loop transition (loop_transitions.h)
       float d[25 * 4];
       float* out = d;
-      for (int dy = -kReach; dy <= kReach; ++dy)
-        for (int dx = -kReach; dx <= kReach; ++dx) {
-          const uint32_t vx = wrap(cx + dx * h, m), vy = wrap(cy + dy * h, m);
-          for (uint32_t c = 0; c < C; ++c) *out++ = value(e, k, vx, vy, c);
-        }
+      for (size_t y : row)
+        for (size_t x : column)
+          for (uint32_t c = 0; c < C; ++c) *out++ = level[y + x + c];
       bring_to_contrast(d, C, contrast);
       double sum = 0.0;
       for (uint32_t j = 0; j < 25 * C; ++j) {
-        const double diff = double(n[j]) - (d[j] + b[j % C]);
+        const double diff = n[j] - (d[j] + b[j % C]);
         sum += diff * diff;
         if (sum >= bound) return sum;
       }
       return sum;
     }
     double sum = 0.0;
-    for (int dy = -kReach; dy <= kReach; ++dy)
-      for (int dx = -kReach; dx <= kReach; ++dx) {
-        const uint32_t vx = wrap(cx + dx * h, m), vy = wrap(cy + dy * h, m);
+    for (size_t y : row)
+      for (size_t x : column) {
+        const float* v = level + y + x;
         for (uint32_t c = 0; c < C; ++c) {
-          const double d = double(*n++) - (value(e, k, vx, vy, c) + b[c]);
+          const double d = *n++ - (v[c] + b[c]);
           sum += d * d;
         }
         if (sum >= bound) return sum;
@@ -189,66 +227,146 @@ class Synthesizer {
     return sum;
   }
 
+  // The index of the first candidate of least Eq. 5.1 error (-1 for none). Consecutive candidates without a loop
+  // transform are summed in groups of kLanes, each sum in the order error() sums, and a group stops once every lane
+  // has reached the best error of the earlier groups (a candidate there cannot win): the same sums, so the same
+  // winner, as evaluating them one by one; the independent sums side by side keep the floating-point units busy.
+  int first_best(const double* n, const Candidate* competing, int count) const {
+    double best_error = std::numeric_limits<double>::infinity();
+    int best = -1;
+    for (int i = 0; i < count;) {
+      const Candidate& c = competing[i];
+      if (c.contrast > 0.0) {
+        const double err = error(n, c.e, c.k, c.x, c.y, c.b, best_error, c.contrast);
+        if (err < best_error) best_error = err, best = i;
+        ++i;
+        continue;
+      }
+      int lanes = 0;
+      while (lanes < kLanes && i + lanes < count && competing[i + lanes].contrast == 0.0) ++lanes;
+      double err[kLanes];
+      lane_errors(n, competing + i, lanes, best_error, err);
+      for (int j = 0; j < lanes; ++j)
+        if (err[j] < best_error) best_error = err[j], best = i + j;
+      i += lanes;
+    }
+    return best;
+  }
+
+  // error() of up to kLanes candidates side by side (no loop transform), stopped (at values >= bound) after the first
+  // row of samples at which all have reached bound.
+  void lane_errors(const double* n, const Candidate* c, int lanes, double bound, double* out) const {
+    switch (g_.layout.channels) {  // the channel count as a constant: unrolled sample loops
+      case 1:
+        return lane_errors<1>(n, c, lanes, bound, out);
+      case 2:
+        return lane_errors<2>(n, c, lanes, bound, out);
+      case 3:
+        return lane_errors<3>(n, c, lanes, bound, out);
+      default:
+        return lane_errors<4>(n, c, lanes, bound, out);
+    }
+  }
+  template <uint32_t C>
+  void lane_errors(const double* n, const Candidate* c, int lanes, double bound, double* out) const {
+    const uint32_t m = g_.layout.side;
+    const float* row[kLanes][2 * kReach + 1];  // each lane's toroidal sample rows and columns
+    size_t column[kLanes][2 * kReach + 1];
+    const float* b[kLanes];
+    for (int l = 0; l < kLanes; ++l) {
+      const Candidate& cl = c[std::min(l, lanes - 1)];  // spare lanes repeat the last candidate
+      const int64_t h = spacing(cl.k);
+      const float* level = &g_.stacks[g_.texel(cl.e, cl.k, 0, 0) * C];
+      for (int d = -kReach; d <= kReach; ++d) {
+        row[l][d + kReach] = level + size_t(wrap(cl.y + d * h, m)) * m * C;
+        column[l][d + kReach] = size_t(wrap(cl.x + d * h, m)) * C;
+      }
+      b[l] = cl.b;
+    }
+    double sum[kLanes] = {};
+    for (int dy = 0; dy < 2 * kReach + 1; ++dy) {
+      for (int dx = 0; dx < 2 * kReach + 1; ++dx, n += C)
+        for (int l = 0; l < kLanes; ++l) {
+          const float* v = row[l][dy] + column[l][dx];
+          for (uint32_t ch = 0; ch < C; ++ch) {
+            const double d = n[ch] - (v[ch] + b[l][ch]);
+            sum[l] += d * d;
+          }
+        }
+      bool all = true;  // checked once a row
+      for (int l = 0; l < kLanes; ++l) all = all && sum[l] >= bound;
+      if (all) break;
+    }
+    for (int l = 0; l < lanes; ++l) out[l] = sum[l];
+  }
+
+  // One sub-pass: the pixels of one parity read the level as it was before it and are written after it.
   void correct(std::vector<Pixel>& s, const Region& r, int parity, bool output_level) const {
     const uint32_t m = g_.layout.side, C = g_.layout.channels, K = g_.layout.candidates;
-    const std::vector<Pixel> old = s;
     const float zero[4] = {0, 0, 0, 0};
+    // The corrected pixels of this parity, two to a row and column apart: row (y - y0) / 2, column (x - x0) / 2.
+    const int64_t stride = r.width() / 2 + 1;
+    std::vector<Pixel> corrected(size_t((r.height() / 2 + 1) * stride));
     parallel_for(r.y0, r.y1, [&](int64_t y) {
       if (((y & 1) << 1 | 0) != (parity & 2)) return;
-      float n[25 * 4];
+      double n[25 * 4];
       for (int64_t x = r.x0; x < r.x1; ++x) {
         if ((x & 1) != (parity & 1)) continue;
-        neighbourhood(old, r, x, y, n);
-        const Pixel& self = at(old, r, x, y);
+        const Pixel* around[9];  // the 3 x 3 neighbours, row by row (around[4] is the pixel)
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) around[(dy + 1) * 3 + dx + 1] = &at(s, r, x + dx, y + dy);
+        for (const Pixel* q : around)  // their candidate slots are read below: fetched while n is gathered
+          __builtin_prefetch(&g_.candidates[g_.texel(q->e, q->k, q->x, q->y) * K * 4]);
+        neighbourhood(s, r, x, y, n);
+        const Pixel& self = *around[4];
+        const uint32_t* admits = &admits_[(size_t(self.e) * g_.layout.levels + self.k) * admits_stride_];
         // Only texels of the admissible levels of the pixel's level compete (Sec. 5.2.1.2): at an exemplar's
         // finest level that excludes the pixel's own texel, so correction moves it on to a finer exemplar (or,
         // through a loop, back up its own stack) instead of getting stuck; a level with no admissible level
         // keeps its pixel.
+        const auto allowed = [&](uint32_t e, uint32_t k) {
+          return admits[size_t(e) * g_.layout.levels + k] != 0 ||
+                 (output_level && e == self.e && k == L_ && self.k == L_ && !self.magnified);
+        };
         Pixel best = self;
         // Deviation [Han08]: a texel one of the 8 neighbours already holds on the same level is not taken (a
         // coherent neighbour holds a texel one spacing away; the same texel twice magnifies it, and a region of one
         // texel is its own best match at every later level: issue 18's plateaus).
-        const auto held_by_neighbour = [&](uint32_t e, uint32_t k, uint32_t tx, uint32_t ty) {
-          for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx) {
-              if (dx == 0 && dy == 0) continue;
-              const Pixel& q = at(old, r, x + dx, y + dy);
-              if (q.e == e && q.k == k && q.x == tx && q.y == ty) return true;
-            }
-          return false;
+        uint64_t held[8];  // the 8 neighbours' texels (texel_key)
+        for (int i = 0, j = 0; i < 9; ++i)
+          if (i != 4) held[j++] = texel_key(around[i]->e, around[i]->k, around[i]->x, around[i]->y);
+        const auto held_by_neighbour = [&](uint64_t key) {
+          bool found = false;
+          for (uint64_t h : held) found |= h == key;
+          return found;
         };
-        double best_error =
-            allowed(self, self.e, self.k, output_level) && !held_by_neighbour(self.e, self.k, self.x, self.y)
-                ? error(n, self.e, self.k, self.x, self.y, zero)
-                : std::numeric_limits<double>::infinity();
+        // The competing candidates in the order that breaks ties (Eq. 5.1: the earliest wins), the pixel's own first.
+        Candidate competing[1 + 8 + 9 * kMaxCandidates];
+        int count = 0;
+        const uint64_t self_key = texel_key(self.e, self.k, self.x, self.y);
+        if (allowed(self.e, self.k) && !held_by_neighbour(self_key))
+          competing[count++] = {self.e, self.k, self.x, self.y, zero, 0.0};
         // Coherent neighbours often propose the same texel with the same offset: evaluate each once.
         struct Seen {
-          uint32_t e, k, x, y;
+          uint64_t key;
           const float* b;
         };
-        Seen seen[64] = {{self.e, self.k, self.x, self.y, zero}};
+        Seen seen[64];
+        seen[0] = {self_key, zero};
         int seen_count = 1;
         const auto consider = [&](uint32_t e, uint32_t k, int64_t cx, int64_t cy, const float* b) {
-          if (!allowed(self, e, k, output_level)) return;
+          if (!allowed(e, k)) return;
           const uint32_t wx = wrap(cx, m), wy = wrap(cy, m);
+          const uint64_t key = texel_key(e, k, wx, wy);
           for (int i = 0; i < seen_count; ++i)
-            if (seen[i].e == e && seen[i].k == k && seen[i].x == wx && seen[i].y == wy &&
-                (seen[i].b == b || std::equal(b, b + C, seen[i].b)))
-              return;
-          if (seen_count < 64) seen[seen_count++] = {e, k, wx, wy, b};
-          if (held_by_neighbour(e, k, wx, wy)) return;
-          const double err = error(n, e, k, cx, cy, b, best_error, loops_.target(self.e, self.k, e, k));
-          if (!(err < best_error)) return;
-          best_error = err;
-          best.e = e;
-          best.k = k;
-          best.x = wrap(cx, m);
-          best.y = wrap(cy, m);
-          for (uint32_t c = 0; c < C; ++c) best.R[c] = self.R[c] + b[c];
+            if (seen[i].key == key && (seen[i].b == b || std::equal(b, b + C, seen[i].b))) return;
+          if (seen_count < 64) seen[seen_count++] = {key, b};
+          if (held_by_neighbour(key)) return;
+          competing[count++] = {e, k, wx, wy, b, loops_.target(self.e, self.k, e, k)};
         };
         for (int dy = -1; dy <= 1; ++dy)
           for (int dx = -1; dx <= 1; ++dx) {
-            const Pixel& q = at(old, r, x + dx, y + dy);
+            const Pixel& q = *around[(dy + 1) * 3 + dx + 1];
             const int64_t hq = spacing(q.k);
             if (dx != 0 || dy != 0) consider(q.e, q.k, int64_t(q.x) - dx * hq, int64_t(q.y) - dy * hq, zero);
             const size_t slots = g_.texel(q.e, q.k, q.x, q.y) * K;
@@ -260,8 +378,26 @@ class Synthesizer {
               consider(cand[0], cand[1], int64_t(cand[2]) - dx * hl, int64_t(cand[3]) - dy * hl, b);
             }
           }
-        s[size_t((y - r.y0) * r.width() + (x - r.x0))] = best;
+        const int winner = first_best(n, competing, count);
+        if (winner >= 0) {
+          const Candidate& w = competing[winner];
+          best.e = w.e;
+          best.k = w.k;
+          best.x = w.x;
+          best.y = w.y;
+          for (uint32_t c = 0; c < C; ++c) {
+            best.R[c] = self.R[c] + w.b[c];
+            best.loop[c] = w.contrast > 0.0 ? self.loop[c] + w.b[c] : self.loop[c];
+          }
+        }
+        corrected[size_t((y - r.y0) / 2 * stride + (x - r.x0) / 2)] = best;
       }
+    });
+    parallel_for(r.y0, r.y1, [&](int64_t y) {
+      if (((y & 1) << 1 | 0) != (parity & 2)) return;
+      for (int64_t x = r.x0; x < r.x1; ++x)
+        if ((x & 1) == (parity & 1))
+          s[size_t((y - r.y0) * r.width() + (x - r.x0))] = corrected[size_t((y - r.y0) / 2 * stride + (x - r.x0) / 2)];
     });
   }
 
@@ -269,7 +405,7 @@ class Synthesizer {
     std::vector<double> rows(size_t(r.height()), 0.0);
     const float zero[4] = {0, 0, 0, 0};
     parallel_for(r.y0, r.y1, [&](int64_t y) {
-      float n[25 * 4];
+      double n[25 * 4];
       for (int64_t x = r.x0; x < r.x1; ++x) {
         neighbourhood(s, r, x, y, n);
         const Pixel& p = at(s, r, x, y);
@@ -281,22 +417,24 @@ class Synthesizer {
     return sum / double(s.size());
   }
 
+  // One number per texel pointer: texel coordinates below 2^12 (formats/graph_layout.h), levels below 2^8.
+  static uint64_t texel_key(uint32_t e, uint32_t k, uint32_t x, uint32_t y) {
+    return uint64_t(e) << 32 | uint64_t(k) << 24 | uint64_t(y) << 12 | x;
+  }
+
   // At its exemplar's finest level with nowhere to go (no admissible level there: the exemplar has no outgoing
   // edge of r >= 1).
   bool stuck(const Pixel& p) const { return p.k == L_ && admissible_[p.e][L_].empty(); }
-
-  bool allowed(const Pixel& at, uint32_t e, uint32_t k, bool output_level) const {
-    if (output_level && e == at.e && k == L_ && at.k == L_) return true;
-    if (!loop_transition_allowed(at.e, at.k, e, k, L_)) return false;
-    const auto& set = admissible_[at.e][at.k];
-    return std::find(set.begin(), set.end(), StackLevel{e, k}) != set.end();
-  }
 
   const GraphTables& g_;
   const SynthesisOptions& o_;
   uint32_t L_;
   std::vector<std::vector<std::vector<StackLevel>>> admissible_;
   LoopContrast loops_;
+  // Whether correction may move a pixel of (i, k) to (j, l): admissible (Sec. 5.2.1.2) and not a loop below the
+  // finest level (loop_transitions.h); [(i * levels + k) * admits_stride_ + j * levels + l].
+  size_t admits_stride_;
+  std::vector<uint32_t> admits_;
 };
 
 }  // namespace

@@ -10,7 +10,8 @@
 //     MultiscaleSynthesis.SelfLoopZoomTenLevelsDeepStaysCoherent); a pixel stuck at the finest level L (its exemplar
 //     has no admissible level there, so correction cannot move it on) passes its texel to its four children and is not
 //     jittered: it magnifies its exemplar (nearest texel); R is bilinear in the four nearest parents' R (the thesis:
-//     piecewise-constant inheritance blocks);
+//     piecewise-constant inheritance blocks), less half the share of it that loop transitions added (that share
+//     fades: loop_transitions.h);
 //   jitter (Sec. 5.2.2.2): u += floor(h_k H(p) r_t + (1/2, 1/2)) mod m, H a PCG hash of (seed, t, p) into [-1, 1]^2,
 //     r_t the level's randomness (options.jitter[t], the last value repeating);
 //   correction (Sec. 5.2.2.3, Eq. 5.1 with k-coherence, Eq. 5.3): `passes` passes of four sub-passes over the pixel
@@ -23,15 +24,16 @@
 //     (the synthesis neighbourhood brought back into the pixel's own colour space, against the candidate
 //     transformed by its transfer b, Sec. 5.3), ties to the earliest in that order; the pixel then points at it
 //     and R_p += b. With `correct_inconsistency` off, b is taken as 0 everywhere (to measure what it buys).
-//     Loops are taken only from the finest level, matched at the source's contrast and carry a transfer
-//     (loop_transitions.h). Deviation [Han08]: a candidate texel that one of the pixel's 8 neighbours already holds
-//     on the same level is not taken (the same texel twice is a magnification, and a region of one texel is its
-//     own best match at every later level: issue 18).
-//     Deviation [Han08]: at the output level T a pixel at its exemplar's finest level may also keep a texel of that
-//     level (its own, or a neighbour's shifted). The thesis never admits E_L, so that correction moves on to finer
-//     scales; at T there is no finer level to move on to, and forcing the move there shows every window that reaches
-//     an exemplar's own scale through its coarser neighbour (a self-loop window at the exemplar's scale showed the
-//     exemplar minified 2x and blurred: 3% of leather's block variance, 73% of bumps'; issue 18).
+//     Loops are taken only from the finest level, matched at the source's contrast and carry a transfer that
+//     fades by half per level (loop_transitions.h). Deviation [Han08]: a candidate texel that one of the pixel's 8
+//     neighbours already holds on the same level is not taken (the same texel twice is a magnification, and a region of
+//     one texel is its own best match at every later level: issue 18). Deviation [Han08]: at the output level T a pixel
+//     at its exemplar's finest level may also keep a texel of that level (its own, or a neighbour's shifted), unless
+//     it is a magnification (its parent was stuck there already: correction would shuffle the magnified texels into a
+//     grid of squares). The thesis never admits E_L, so that correction moves on to finer scales; at T there is no
+//     finer level to move on to, and forcing the move there shows every window that reaches an exemplar's own scale
+//     through its coarser neighbour (a self-loop window at the exemplar's scale showed the exemplar minified 2x and
+//     blurred: 3% of leather's block variance, 73% of bumps'; issue 18).
 // Window independence: level t is computed on the requested region grown by 2 pixels per sub-pass (the 5 x 5
 // reach), whose parents are computed the same way; reads beyond a region clamp to it and only affect pixels that
 // are discarded, so every output pixel is a function of its position alone (tests: tiles vs whole, 1 vs 2 threads).

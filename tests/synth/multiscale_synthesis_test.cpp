@@ -162,6 +162,22 @@ Image octaves(uint32_t m, uint32_t seed) {
 // A 32 x 32 self-similar exemplar (L = 5) with a 2x self-loop, synthesized to level 15: ten levels below its own
 // texels. The mean matching error per level stays bounded (no drift into incoherent output), and the finest
 // window keeps the variety of the exemplar's own scale (it does not fade to a flat colour).
+// Past the finest level of an exemplar with nowhere to go (the root alone) a window only magnifies: every pixel of
+// level L + 2 is the level L + 1 pixel at half its coordinates (a 16 x 16 exemplar, L = 4; near and far from the
+// origin). Correction at the output level once shuffled the magnified texels into a grid of squares.
+TEST(MultiscaleSynthesis, PastTheFinestLevelOfAnExemplarWithNowhereToGoWindowsOnlyMagnify) {
+  ExemplarGraph g;
+  g.exemplars = {{"a", "a.png", "a.png"}};
+  const GraphTables t = tables_of(g, {blobs(16, 3)});
+  for (const int64_t origin : {int64_t(-6), (int64_t(1) << 40) + 6}) {
+    const Image coarse = window(t, 5, origin, -origin, 24, 24), fine = window(t, 6, 2 * origin, -2 * origin, 48, 48);
+    for (uint32_t y = 0; y < 48; ++y)
+      for (uint32_t x = 0; x < 48; ++x)
+        for (uint32_t c = 0; c < 3; ++c)
+          ASSERT_EQ(fine.at(x, y, c), coarse.at(x / 2, y / 2, c)) << "origin " << origin << ", " << x << "," << y;
+  }
+}
+
 TEST(MultiscaleSynthesis, SelfLoopZoomTenLevelsDeepStaysCoherent) {
   const Image exemplar = octaves(32, 2);
   const GraphTables t = tables_of(self_loop_graph(), {exemplar});
