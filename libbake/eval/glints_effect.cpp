@@ -5,10 +5,12 @@
 #include <memory>
 #include <numbers>
 #include <utility>
+#include <vector>
 
 #include "formats/asset.h"
 #include "formats/error.h"
 #include "libbake/core/progress.h"
+#include "libbake/eval/uv_footprint.h"
 #include "libbake/glint/glint_surface.h"
 #include "libbake/glint/glint_surface_mapping.h"
 #include "libbake/glint/lut_asset.h"
@@ -119,12 +121,22 @@ ShaderPtr glints_effect_shader(const EffectShaderRequest& request) {
   f->surface =
       GlintSurface::open(example->map, Asset::open(request.assets.at(0)), Asset::open(request.assets.at(1)), settings);
   return std::make_shared<GlintShader>([f, W, H](const ShadingContext& c) {
-    const GlintFootprint fp = glint_pixel_footprint(c.uv, c.footprint.duv_dx, c.footprint.duv_dy, W, H);
-    if (!std::isfinite(fp.sigma)) return GlintDistribution([](const Vec2&, double) { return 0.0; });  // grazing
-    return GlintDistribution([f, fp](const Vec2& s, double spread) {
-      GlintFootprint swept = fp;
-      swept.normal_spread = spread;
-      return f->surface->ndf(swept, s, false);
+    // The pixel's anisotropic footprint as probes along its major axis (glint_surface_mapping.h), equally weighted.
+    const FootprintProbes probes = footprint_probes(c.uv, c.footprint, W, H);
+    std::vector<GlintFootprint> footprints;
+    footprints.reserve(size_t(probes.size()));
+    for (const FootprintProbe& p : probes) {
+      footprints.push_back(glint_probe_footprint(p.uv, p.width, W, H));
+      if (!std::isfinite(footprints.back().sigma))
+        return GlintDistribution([](const Vec2&, double) { return 0.0; });  // grazing
+    }
+    return GlintDistribution([f, footprints = std::move(footprints)](const Vec2& s, double spread) {
+      double sum = 0.0;
+      for (GlintFootprint swept : footprints) {
+        swept.normal_spread = spread;
+        sum += f->surface->ndf(swept, s, false);
+      }
+      return sum / double(footprints.size());
     });
   });
 }

@@ -20,8 +20,9 @@
 //     lod = log2(w) - log2(sqrt(3))   (kLodOfBoxVariance = 0.79),
 // clamped at 0 (magnification). (lod = log2(w), the OpenGL rule, filters twice the box's variance: at ~5 texels
 // per pixel that alone doubled the filtered effects' error on the filtering report's middle sphere.) A circle (or
-// max_probes = 1) gives one probe of width s1. A footprint that is infinite (grazing rays) gives one probe at kMaxLod,
-// which every pyramid clamps to its coarsest level.
+// max_probes = 1) gives one probe of width s1; magnification (s1 <= 1) one probe at level 0 of width s1. A footprint
+// that is infinite (grazing rays) gives one probe at kMaxLod and infinite width, which every pyramid clamps to its
+// coarsest level.
 #pragma once
 
 #include <array>
@@ -47,10 +48,13 @@ inline constexpr double kMaxLod = 64.0;
 inline constexpr double kLodOfBoxVariance = 0.79248125036057812;  // log2(sqrt(3)), see above
 inline constexpr int kMaxFootprintProbes = 64;
 
-// One trilinear lookup of an anisotropic footprint: where, and at which level of detail.
+// One lookup of an anisotropic footprint: where, at which level of detail, and the box width w it stands for
+// (texels of the W x H map; +inf for a grazing ray). Trilinear lookups use lod; the glints P-NDF, which filters
+// by a Gaussian footprint of its own, uses width.
 struct FootprintProbe {
   Vec2 uv = Vec2::Zero();
   double lod = 0.0;
+  double width = 0.0;
 };
 
 // The probes covering a footprint, each of weight 1 / size().
