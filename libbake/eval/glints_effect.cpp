@@ -18,30 +18,31 @@
 namespace mbk {
 namespace {
 
-// D(s) at a shading point, s = (h_x, h_y) in the tangent frame, for a pixel over which s sweeps with standard
-// deviation `spread` (the reference traces rays over the pixel instead, and ignores it).
-using GlintDistribution = std::function<double(const Vec2& s, double spread)>;
+// D(s) at a shading point, s = (h_x, h_y) in the tangent frame, for a pixel over which s sweeps with covariance
+// `sweep` (the reference traces rays over the pixel instead, and ignores it).
+using GlintDistribution = std::function<double(const Vec2& s, const Mat2& sweep)>;
 using DistributionAt = std::function<GlintDistribution(const ShadingContext& c)>;
 
-// The standard deviation of s = (h . T, h . B) over the pixel, for the light in direction l at `distance`:
+// The covariance of s = (h . T, h . B) over the pixel, for the light in direction l at `distance`:
 // h = (l + v) / |l + v| moves by dh = (I - h h^T)(dl + dv) / |l + v| per pixel step, with
 // dl = -(dp - l (l . dp)) / distance (0 for a directional light) and dv from the footprint; a box pixel spreads
-// each step's ds uniformly over one step, variance |ds|^2 / 12 per step, split evenly between the two components
-// of s (glint_pndf.h: "Directional spread").
-double half_vector_spread(const ShadingContext& c, const Vec3& l, double distance) {
+// each step's ds uniformly over one step, covariance ds ds^T / 12 per step (glint_pndf.h: "Directional spread").
+// At grazing angles the two steps differ by an order of magnitude, so the covariance is kept whole.
+Mat2 half_vector_sweep(const ShadingContext& c, const Vec3& l, double distance) {
   const Vec3 sum = l + c.to_viewer;
   const double length = sum.norm();
-  if (!(length > 1e-12)) return 0.0;
+  if (!(length > 1e-12)) return Mat2::Zero();
   const Vec3 h = sum / length;
-  double variance = 0.0;
+  Mat2 covariance = Mat2::Zero();
   for (const auto& [dp, dv] :
        {std::pair{c.footprint.dp_dx, c.footprint.dview_dx}, std::pair{c.footprint.dp_dy, c.footprint.dview_dy}}) {
     const Vec3 dl = std::isfinite(distance) ? Vec3(-(dp - l * l.dot(dp)) / distance) : Vec3::Zero();
     const Vec3 dh = ((dl + dv) - h * h.dot(dl + dv)) / length;
-    variance += (std::pow(dh.dot(c.frame.T), 2) + std::pow(dh.dot(c.frame.B), 2)) / 12.0;
+    const Vec2 ds(dh.dot(c.frame.T), dh.dot(c.frame.B));
+    covariance += ds * ds.transpose() / 12.0;
   }
-  const double spread = std::sqrt(variance / 2.0);
-  return std::isfinite(spread) ? spread : 0.0;  // a grazing ray's infinite step: no spread rather than none at all
+  // A grazing ray's infinite step: no sweep rather than none at all.
+  return covariance.allFinite() ? covariance : Mat2::Zero();
 }
 
 class GlintShader : public MaterialShader {
@@ -58,9 +59,9 @@ class GlintShader : public MaterialShader {
     if (!(n.dot(v) > 0.0)) return out;
     const GlintDistribution d = at_(c);
     for_each_direct_light(*c.lighting, c.position, n, [&](const Vec3& l, const Vec3& e, double distance) {
-      const double spread = half_vector_spread(c, l, distance);
+      const Mat2 sweep = half_vector_sweep(c, l, distance);
       const Vec3 spec = evaluate_specular(
-          brdf, n, l, v, [&](const Vec3& h) { return d(Vec2(h.dot(c.frame.T), h.dot(c.frame.B)), spread); });
+          brdf, n, l, v, [&](const Vec3& h) { return d(Vec2(h.dot(c.frame.T), h.dot(c.frame.B)), sweep); });
       out += (brdf.albedo / std::numbers::pi + spec).cwiseProduct(e) * n.dot(l);
     });
     return out;
@@ -108,7 +109,8 @@ ShaderPtr glints_effect_shader(const EffectShaderRequest& request) {
     const double sigma_r = settings.sigma_r;
     return std::make_shared<GlintShader>([r, sigma_r, W, H](const ShadingContext& c) {
       const Vec2 u = glint_target_point(c.uv, W, H);
-      return GlintDistribution([r, sigma_r, u](const Vec2& s, double) { return point_ndf(*r->point, u, sigma_r, s); });
+      return GlintDistribution(
+          [r, sigma_r, u](const Vec2& s, const Mat2&) { return point_ndf(*r->point, u, sigma_r, s); });
     });
   }
 
@@ -128,12 +130,12 @@ ShaderPtr glints_effect_shader(const EffectShaderRequest& request) {
     for (const FootprintProbe& p : probes) {
       footprints.push_back(glint_probe_footprint(p.uv, p.width, W, H));
       if (!std::isfinite(footprints.back().sigma))
-        return GlintDistribution([](const Vec2&, double) { return 0.0; });  // grazing
+        return GlintDistribution([](const Vec2&, const Mat2&) { return 0.0; });  // grazing
     }
-    return GlintDistribution([f, footprints = std::move(footprints)](const Vec2& s, double spread) {
+    return GlintDistribution([f, footprints = std::move(footprints)](const Vec2& s, const Mat2& sweep) {
       double sum = 0.0;
       for (GlintFootprint swept : footprints) {
-        swept.normal_spread = spread;
+        swept.sweep = sweep;
         sum += f->surface->ndf(swept, s, false);
       }
       return sum / double(footprints.size());
