@@ -14,35 +14,35 @@
 #include "libbake/glint/glint_surface.h"
 #include "libbake/glint/glint_surface_mapping.h"
 #include "libbake/glint/lut_asset.h"
+#include "libbake/glint/pixel_sweep.h"
 
 namespace mbk {
 namespace {
 
-// D(s) at a shading point, s = (h_x, h_y) in the tangent frame, for a pixel over which s sweeps with covariance
-// `sweep` (the reference traces rays over the pixel instead, and ignores it).
-using GlintDistribution = std::function<double(const Vec2& s, const Mat2& sweep)>;
+// D(s) at a shading point, s = (h_x, h_y) in the tangent frame, for a pixel over which s moves by the columns of
+// `steps` per pixel step (the reference traces rays over the pixel instead, and ignores it).
+using GlintDistribution = std::function<double(const Vec2& s, const Mat2& steps)>;
 using DistributionAt = std::function<GlintDistribution(const ShadingContext& c)>;
 
-// The covariance of s = (h . T, h . B) over the pixel, for the light in direction l at `distance`:
-// h = (l + v) / |l + v| moves by dh = (I - h h^T)(dl + dv) / |l + v| per pixel step, with
-// dl = -(dp - l (l . dp)) / distance (0 for a directional light) and dv from the footprint; a box pixel spreads
-// each step's ds uniformly over one step, covariance ds ds^T / 12 per step (glint_pndf.h: "Directional spread").
-// At grazing angles the two steps differ by an order of magnitude, so the covariance is kept whole.
-Mat2 half_vector_sweep(const ShadingContext& c, const Vec3& l, double distance) {
+// ds per pixel step, s = (h . T, h . B), for the light in direction l at `distance`: h = (l + v) / |l + v| moves
+// by dh = (I - h h^T)(dl + dv) / |l + v| per step, with dl = -(dp - l (l . dp)) / distance (0 for a directional
+// light) and dv from the footprint (glint_pndf.h: "Directional spread"; pixel_sweep.h: how it is used). At grazing
+// angles the two steps differ by an order of magnitude.
+Mat2 half_vector_steps(const ShadingContext& c, const Vec3& l, double distance) {
   const Vec3 sum = l + c.to_viewer;
   const double length = sum.norm();
   if (!(length > 1e-12)) return Mat2::Zero();
   const Vec3 h = sum / length;
-  Mat2 covariance = Mat2::Zero();
+  Mat2 steps;
+  int k = 0;
   for (const auto& [dp, dv] :
        {std::pair{c.footprint.dp_dx, c.footprint.dview_dx}, std::pair{c.footprint.dp_dy, c.footprint.dview_dy}}) {
     const Vec3 dl = std::isfinite(distance) ? Vec3(-(dp - l * l.dot(dp)) / distance) : Vec3::Zero();
     const Vec3 dh = ((dl + dv) - h * h.dot(dl + dv)) / length;
-    const Vec2 ds(dh.dot(c.frame.T), dh.dot(c.frame.B));
-    covariance += ds * ds.transpose() / 12.0;
+    steps.col(k++) = Vec2(dh.dot(c.frame.T), dh.dot(c.frame.B));
   }
   // A grazing ray's infinite step: no sweep rather than none at all.
-  return covariance.allFinite() ? covariance : Mat2::Zero();
+  return steps.allFinite() ? steps : Mat2::Zero();
 }
 
 class GlintShader : public MaterialShader {
@@ -59,9 +59,9 @@ class GlintShader : public MaterialShader {
     if (!(n.dot(v) > 0.0)) return out;
     const GlintDistribution d = at_(c);
     for_each_direct_light(*c.lighting, c.position, n, [&](const Vec3& l, const Vec3& e, double distance) {
-      const Mat2 sweep = half_vector_sweep(c, l, distance);
+      const Mat2 steps = half_vector_steps(c, l, distance);
       const Vec3 spec = evaluate_specular(
-          brdf, n, l, v, [&](const Vec3& h) { return d(Vec2(h.dot(c.frame.T), h.dot(c.frame.B)), sweep); });
+          brdf, n, l, v, [&](const Vec3& h) { return d(Vec2(h.dot(c.frame.T), h.dot(c.frame.B)), steps); });
       out += (brdf.albedo / std::numbers::pi + spec).cwiseProduct(e) * n.dot(l);
     });
     return out;
@@ -132,11 +132,12 @@ ShaderPtr glints_effect_shader(const EffectShaderRequest& request) {
       if (!std::isfinite(footprints.back().sigma))
         return GlintDistribution([](const Vec2&, const Mat2&) { return 0.0; });  // grazing
     }
-    return GlintDistribution([f, footprints = std::move(footprints)](const Vec2& s, const Mat2& sweep) {
+    return GlintDistribution([f, footprints = std::move(footprints)](const Vec2& s, const Mat2& steps) {
+      const SweptNormals swept = pixel_sweep(s, steps, f->surface->pndf().sigma_r());
       double sum = 0.0;
-      for (GlintFootprint swept : footprints) {
-        swept.sweep = sweep;
-        sum += f->surface->ndf(swept, s, false);
+      for (GlintFootprint footprint : footprints) {
+        footprint.sweep = swept.residual;
+        sum += f->surface->pndf().evaluate_mean(footprint, swept.normals, nullptr, true);
       }
       return sum / double(footprints.size());
     });

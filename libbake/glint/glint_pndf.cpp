@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
@@ -90,6 +91,23 @@ GlintPndf::GlintPndf(const GlintRangeQuery& range, double sigma_r) : range_(&ran
 
 // C = sigma_r^2 I + the footprint's sweep, whitened (glint_pndf.h, "Directional spread"). C is symmetric with
 // eigenvalues >= sigma_r^2 > 0; W = C^(-1/2) and C^(1/2) come from its eigen-decomposition in closed form.
+// The normals D_P is evaluated at, whitened, and their bounding box.
+struct GlintPndf::Normals {
+  std::span<const Vec2> s;
+  std::vector<Vec2> ws;  // W s
+  RmqBounds box;
+
+  Normals(std::span<const Vec2> normals, const Mat2& whiten)
+      : s(normals), box{INFINITY, -INFINITY, INFINITY, -INFINITY} {
+    ws.reserve(normals.size());
+    for (const Vec2& n : normals) {
+      ws.push_back(whiten * n);
+      box = {std::min(box.min_x, n.x()), std::max(box.max_x, n.x()), std::min(box.min_y, n.y()),
+             std::max(box.max_y, n.y())};
+    }
+  }
+};
+
 struct GlintPndf::NormalKernel {
   Mat2 whiten;        // W = C^(-1/2)
   Mat2 unwhiten;      // C^(1/2)
@@ -113,22 +131,29 @@ GlintPndf::NormalKernel GlintPndf::normal_kernel(const GlintFootprint& footprint
   return k;
 }
 
-bool GlintPndf::outside(const RmqBounds& b, const Vec2& s, const NormalKernel& kernel) {
+bool GlintPndf::outside(const RmqBounds& b, const RmqBounds& normals, const NormalKernel& kernel) {
   const Vec2& m = kernel.cutoff;
-  return s.x() < b.min_x - m.x() || s.x() > b.max_x + m.x() || s.y() < b.min_y - m.y() || s.y() > b.max_y + m.y();
+  return normals.max_x < b.min_x - m.x() || normals.min_x > b.max_x + m.x() || normals.max_y < b.min_y - m.y() ||
+         normals.min_y > b.max_y + m.y();
 }
 
-double GlintPndf::element_term(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Vec2& s, const Vec2& ws,
+double GlintPndf::element_term(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Normals& normals,
                                const NormalKernel& kernel) const {
-  if (outside(range_->element_bounds(t0, t1), s, kernel)) return 0.0;
-  double sum = 0.0;
+  const RmqBounds b = range_->element_bounds(t0, t1);
+  if (outside(b, normals.box, kernel)) return 0.0;
+  std::array<PositionNormalElement, kK * kK> whitened;
   for (int a1 = 0; a1 < kK; ++a1)
     for (int a0 = 0; a0 < kK; ++a0) {
-      PositionNormalElement e = sub_element(range_->point(), t0, t1, a0, a1);
+      PositionNormalElement& e = whitened[size_t(a1 * kK + a0)] = sub_element(range_->point(), t0, t1, a0, a1);
       e.n = kernel.whiten * e.n;
       e.jacobian = kernel.whiten * e.jacobian;
-      sum += element_footprint_integral(e, footprint, 1.0, ws);
     }
+  double sum = 0.0;
+  for (size_t i = 0; i < normals.s.size(); ++i) {
+    const Vec2& s = normals.s[i];
+    if (outside(b, {s.x(), s.x(), s.y(), s.y()}, kernel)) continue;
+    for (const PositionNormalElement& e : whitened) sum += element_footprint_integral(e, footprint, 1.0, normals.ws[i]);
+  }
   return sum;
 }
 
@@ -160,18 +185,17 @@ double GlintPndf::evaluate_brute_force(const GlintFootprint& footprint, const Ve
   const TexelRange t = footprint_texels(footprint);
   if (t.empty()) return 0.0;
   const NormalKernel kernel = normal_kernel(footprint);
-  const Vec2 ws = kernel.whiten * s;
+  const Normals normals({&s, 1}, kernel.whiten);
   double sum = 0.0;
   for (int64_t t1 = t.t1_lo; t1 <= t.t1_hi; ++t1)
-    for (int64_t t0 = t.t0_lo; t0 <= t.t0_hi; ++t0) sum += element_term(t0, t1, footprint, s, ws, kernel);
+    for (int64_t t0 = t.t0_lo; t0 <= t.t0_hi; ++t0) sum += element_term(t0, t1, footprint, normals, kernel);
   return kernel.det_whiten * sum / FootprintMasses(footprint, t).total();
 }
 
 struct GlintPndf::Query {
   const GlintFootprint& footprint;
-  Vec2 s;
   NormalKernel kernel;
-  Vec2 ws;  // W s
+  Normals normals;
   TexelRange texels;
   bool aggregate;
   FootprintMasses masses;
@@ -182,14 +206,14 @@ double GlintPndf::traverse(const TargetNode& node, const Query& q, PndfStatistic
   const int64_t h = range_->target_side();
   if (node.width == 1 && node.height == 1) {
     const double v =
-        element_term(node.patch_i * h + node.x0, node.patch_j * h + node.y0, q.footprint, q.s, q.ws, q.kernel);
+        element_term(node.patch_i * h + node.x0, node.patch_j * h + node.y0, q.footprint, q.normals, q.kernel);
     if (v != 0.0) ++stats.elements_evaluated;
     return v;
   }
   uint32_t lookups = 0;
   const RmqBounds b = range_->node_bounds(node, &lookups);
   stats.rmq_lookups += lookups;
-  if (outside(b, q.s, q.kernel)) return 0.0;
+  if (outside(b, q.normals.box, q.kernel)) return 0.0;
   const double narrow = kGlintAggregateWidthSigmas * q.kernel.sigma_min;
   if (q.aggregate && b.max_x - b.min_x <= narrow && b.max_y - b.min_y <= narrow) {
     ++stats.nodes_aggregated;
@@ -198,8 +222,12 @@ double GlintPndf::traverse(const TargetNode& node, const Query& q, PndfStatistic
     const FootprintMasses& m = q.masses;
     const double mass = m.common * (m.prefix_x[size_t(x + node.width * kK)] - m.prefix_x[size_t(x)]) *
                         (m.prefix_y[size_t(y + node.height * kK)] - m.prefix_y[size_t(y)]);
-    const Vec2 c(0.5 * (b.min_x + b.max_x), 0.5 * (b.min_y + b.max_y));
-    return mass * std::exp(-0.5 * (q.ws - q.kernel.whiten * c).squaredNorm()) / (2.0 * std::numbers::pi);
+    const Vec2 wc = q.kernel.whiten * Vec2(0.5 * (b.min_x + b.max_x), 0.5 * (b.min_y + b.max_y));
+    double sum = 0.0;
+    for (size_t i = 0; i < q.normals.s.size(); ++i)
+      if (!outside(b, {q.normals.s[i].x(), q.normals.s[i].x(), q.normals.s[i].y(), q.normals.s[i].y()}, q.kernel))
+        sum += std::exp(-0.5 * (q.normals.ws[i] - wc).squaredNorm());
+    return mass * sum / (2.0 * std::numbers::pi);
   }
   const uint32_t w0 = (node.width + 1) / 2, h0 = (node.height + 1) / 2;
   double sum = 0.0;
@@ -217,10 +245,15 @@ double GlintPndf::traverse(const TargetNode& node, const Query& q, PndfStatistic
 
 double GlintPndf::evaluate(const GlintFootprint& footprint, const Vec2& s, PndfStatistics* stats,
                            bool aggregate) const {
+  return evaluate_mean(footprint, {&s, 1}, stats, aggregate);
+}
+
+double GlintPndf::evaluate_mean(const GlintFootprint& footprint, std::span<const Vec2> s, PndfStatistics* stats,
+                                bool aggregate) const {
   const TexelRange t = footprint_texels(footprint);
-  if (t.empty()) return 0.0;
+  if (t.empty() || s.empty()) return 0.0;
   const NormalKernel kernel = normal_kernel(footprint);
-  const Query q{footprint, s, kernel, kernel.whiten * s, t, aggregate, FootprintMasses(footprint, t)};
+  const Query q{footprint, kernel, Normals(s, kernel.whiten), t, aggregate, FootprintMasses(footprint, t)};
   PndfStatistics local;
   const int64_t h = range_->target_side();
   double sum = 0.0;
@@ -243,7 +276,7 @@ double GlintPndf::evaluate(const GlintFootprint& footprint, const Vec2& s, PndfS
     stats->rmq_lookups += local.rmq_lookups;
     stats->nodes_aggregated += local.nodes_aggregated;
   }
-  return kernel.det_whiten * sum / q.masses.total();
+  return kernel.det_whiten * sum / (q.masses.total() * double(s.size()));
 }
 
 std::optional<Vec2> GlintPndf::sample(const GlintFootprint& footprint, const std::function<double()>& uniform) const {
@@ -274,7 +307,7 @@ std::optional<Vec2> GlintPndf::draw(const GlintFootprint& footprint, const Texel
   e.jacobian = kernel.whiten * e.jacobian;
   const Vec2 s =
       kernel.unwhiten * sample_element_normal(e, footprint, 1.0, {uniform(), uniform(), uniform(), uniform()});
-  if (outside(range_->element_bounds(t0, t1), s, kernel)) return std::nullopt;
+  if (outside(range_->element_bounds(t0, t1), {s.x(), s.x(), s.y(), s.y()}, kernel)) return std::nullopt;
   return s;
 }
 

@@ -16,8 +16,9 @@
 //   sizes the leaf intervals).
 // Directional spread: [Wang20] and [Yan16] evaluate D_P at one s per pixel, as if the half vector were the same
 // over the whole pixel. Under a point light or a perspective camera it sweeps s across the pixel (by ds/dx,
-// ds/dy per pixel step); a renderer that shades a pixel once passes that sweep as footprint.sweep, the
-// covariance S of s over the pixel, and every element is evaluated with the normal covariance
+// ds/dy per pixel step); a renderer that shades a pixel once cuts that sweep into cells (pixel_sweep.h), averages
+// D_P over their centres (evaluate_mean) and passes each cell's own sweep as footprint.sweep, the covariance S of
+// s over the cell, and every element is evaluated with the normal covariance
 // C = sigma_r^2 I + S in place of sigma_r^2 I: the elements' normal Gaussians convolved with the sweep, taken
 // independent of position. C is anisotropic in general (at grazing angles s sweeps across the view many times
 // faster than along it), so the elements are evaluated in whitened normals: with W = C^(-1/2) (symmetric),
@@ -63,6 +64,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "libbake/glint/blended_range.h"
@@ -105,6 +107,10 @@ class GlintPndf {
   // nodes in closed form (rules above: within the stated bound of brute force, not equal to it).
   double evaluate(const GlintFootprint& footprint, const Vec2& s, PndfStatistics* stats = nullptr,
                   bool aggregate = false) const;
+  // The mean of D_P over several normals in one traversal (a node is pruned when every normal is outside it;
+  // the leaves share their sub-elements): what a renderer needs for the box sweep below. 0 for no normals.
+  double evaluate_mean(const GlintFootprint& footprint, std::span<const Vec2> s, PndfStatistics* stats = nullptr,
+                       bool aggregate = false) const;
   // D_P(s) summed over every texel of the footprint (the reference the traversal must equal).
   double evaluate_brute_force(const GlintFootprint& footprint, const Vec2& s) const;
   // A normal drawn with density D_P (rules above), from `uniform` (numbers in [0, 1)); nullopt when the
@@ -116,11 +122,13 @@ class GlintPndf {
 
  private:
   struct NormalKernel;  // the elements' normal covariance C and its whitening (glint_pndf.cpp)
+  struct Normals;       // the normals of one evaluation, whitened, and their box (glint_pndf.cpp)
   NormalKernel normal_kernel(const GlintFootprint& footprint) const;
-  // Element t's sum of k over its sub-elements, in whitened normals (ws = W s).
-  double element_term(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Vec2& s, const Vec2& ws,
+  // Element t's sum of k over its sub-elements and the normals, in whitened normals.
+  double element_term(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Normals& normals,
                       const NormalKernel& kernel) const;
-  static bool outside(const RmqBounds& b, const Vec2& s, const NormalKernel& kernel);
+  // Whether the box of normals lies outside the bounds b widened by the normal cut-off.
+  static bool outside(const RmqBounds& b, const RmqBounds& normals, const NormalKernel& kernel);
   struct Query;  // what one traversal shares with every node (glint_pndf.cpp)
   double traverse(const TargetNode& node, const Query& q, PndfStatistics& stats) const;
   std::optional<Vec2> draw(const GlintFootprint& footprint, const TexelRange& t, const std::vector<double>& wx,

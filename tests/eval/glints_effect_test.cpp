@@ -162,10 +162,10 @@ TEST(GlintsEffect, GrazingHighlightStaysWhereTheReferenceHasIt) {
   // A flat map seen 6 degrees above the plane with a point light low behind the mirror point: across the view the
   // half vector sweeps ~8x faster per pixel than along it. With that sweep taken isotropic (its mean variance in
   // both components), the effect streaked the highlight up to the horizon and lit its row brightest, where the
-  // reference has nothing (block L1 1.29 at 1 spp); the sweep's covariance (glint_pndf.h) keeps it where the
-  // reference has it. Asserted: the brightest row and the highlight's energy (rows where the reference exceeds 10%
-  // of its peak). Measured at 4 spp against 8 x 8 rays: highlight energy -17%, block L1 0.18 (floor of two
-  // references 0.05); left: the Gaussian stand-in for the box sweep and the linearized sweep near the horizon.
+  // reference has nothing (block L1 1.29 at 1 spp against 32 x 32 rays); as one Gaussian of its covariance it
+  // stayed in place but 12-45% dark (the Riemann sum of pixel_sweep.h: 0.39); cut into cells it is 0.021 at 1 spp
+  // and 0.004 at 4 spp (two 8 x 8-ray references differ by 0.05). Asserted: the brightest row, and the highlight's
+  // energy (rows where the reference exceeds 10% of its peak; measured 1.10 of an 8 x 8-ray reference).
   ScratchDir dir("glints_grazing");
   testing::write_normal_map(dir / "flat.exr", 16, 16, [](uint32_t, uint32_t) { return Vec3(0, 0, 1); });
   const json scene_json = {
