@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -26,8 +27,9 @@ using DistributionAt = std::function<GlintDistribution(const ShadingContext& c)>
 
 // ds per pixel step, s = (h . T, h . B), for the light in direction l at `distance`: h = (l + v) / |l + v| moves
 // by dh = (I - h h^T)(dl + dv) / |l + v| per step, with dl = -(dp - l (l . dp)) / distance (0 for a directional
-// light) and dv from the footprint (glint_pndf.h: "Directional spread"; pixel_sweep.h: how it is used). At grazing
-// angles the two steps differ by an order of magnitude.
+// light) and dv from the footprint, and on a curved surface the frame turns with the normal: to first order
+// dT = -N (T . dN), dB = -N (B . dN), adding -(h . N)(T . dN, B . dN) (glint_pndf.h: "Directional spread";
+// pixel_sweep.h: how it is used). At grazing angles the two steps differ by an order of magnitude.
 Mat2 half_vector_steps(const ShadingContext& c, const Vec3& l, double distance) {
   const Vec3 sum = l + c.to_viewer;
   const double length = sum.norm();
@@ -35,11 +37,13 @@ Mat2 half_vector_steps(const ShadingContext& c, const Vec3& l, double distance) 
   const Vec3 h = sum / length;
   Mat2 steps;
   int k = 0;
-  for (const auto& [dp, dv] :
-       {std::pair{c.footprint.dp_dx, c.footprint.dview_dx}, std::pair{c.footprint.dp_dy, c.footprint.dview_dy}}) {
+  const UvFootprint& f = c.footprint;
+  for (const auto& [dp, dv, dn] :
+       {std::tuple{f.dp_dx, f.dview_dx, f.dnormal_dx}, std::tuple{f.dp_dy, f.dview_dy, f.dnormal_dy}}) {
     const Vec3 dl = std::isfinite(distance) ? Vec3(-(dp - l * l.dot(dp)) / distance) : Vec3::Zero();
     const Vec3 dh = ((dl + dv) - h * h.dot(dl + dv)) / length;
-    steps.col(k++) = Vec2(dh.dot(c.frame.T), dh.dot(c.frame.B));
+    const double turn = -h.dot(c.frame.N);
+    steps.col(k++) = Vec2(dh.dot(c.frame.T) + turn * c.frame.T.dot(dn), dh.dot(c.frame.B) + turn * c.frame.B.dot(dn));
   }
   // A grazing ray's infinite step: no sweep rather than none at all.
   return steps.allFinite() ? steps : Mat2::Zero();

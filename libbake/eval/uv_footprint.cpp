@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace mbk {
 namespace {
@@ -26,15 +27,32 @@ Vec3 transfer(const SurfaceHit& h, const Vec3& D, const Vec3& dD) {
   return at_same_t + dt * D;
 }
 
+// The viewer-facing normal's change over one pixel step dD of the ray direction (uv_footprint.h).
+Vec3 normal_step(const Shape& shape, const Ray& ray, const Vec3& dD) {
+  const auto facing_normal = [&](double side) -> std::optional<Vec3> {
+    const Vec3 d = (ray.direction + side * 0.5 * dD).normalized();
+    const auto hit = intersect_shape(shape, Ray{ray.origin, d}, INFINITY);
+    if (!hit) return std::nullopt;
+    return hit->normal.dot(d) < 0.0 ? hit->normal : Vec3(-hit->normal);
+  };
+  const auto plus = facing_normal(1.0), minus = facing_normal(-1.0);
+  return plus && minus && dD.allFinite() ? Vec3(*plus - *minus) : Vec3::Zero();
+}
+
 }  // namespace
 
-UvFootprint uv_footprint(const SurfaceHit& hit, const RayDifferential& ray) {
+UvFootprint uv_footprint(const SurfaceHit& hit, const RayDifferential& ray, const Shape* shape) {
   const Vec3& D = ray.ray.direction;
   const Vec3 dp_dx = transfer(hit, D, ray.ddx), dp_dy = transfer(hit, D, ray.ddy);
   const double length = D.norm();
   const Vec3 d = D / length;
   const auto view_step = [&](const Vec3& dD) -> Vec3 { return -(dD - d * d.dot(dD)) / length; };
-  return {solve_uv(hit, dp_dx), solve_uv(hit, dp_dy), dp_dx, dp_dy, view_step(ray.ddx), view_step(ray.ddy)};
+  UvFootprint f{solve_uv(hit, dp_dx), solve_uv(hit, dp_dy), dp_dx, dp_dy, view_step(ray.ddx), view_step(ray.ddy)};
+  if (shape) {
+    f.dnormal_dx = normal_step(*shape, ray.ray, ray.ddx);
+    f.dnormal_dy = normal_step(*shape, ray.ray, ray.ddy);
+  }
+  return f;
 }
 
 FootprintProbes footprint_probes(const Vec2& uv, const UvFootprint& f, uint32_t map_width, uint32_t map_height) {

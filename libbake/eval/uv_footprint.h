@@ -40,6 +40,10 @@ struct UvFootprint {
   // viewer does not move). The glints effect turns them into the half vector's sweep over the pixel.
   Vec3 dp_dx = Vec3::Zero(), dp_dy = Vec3::Zero();
   Vec3 dview_dx = Vec3::Zero(), dview_dy = Vec3::Zero();
+  // The viewer-facing surface normal's change per pixel step on a curved surface: the normals where the rays
+  // half a step either side meet the same shape, differenced (zero where either misses it, or when no shape was
+  // given). The glints effect turns it into the tangent frame's turn over the pixel.
+  Vec3 dnormal_dx = Vec3::Zero(), dnormal_dy = Vec3::Zero();
   // The cap on anisotropic probes per lookup (`render --max-probes`; 1 = isotropic filtering).
   int max_probes = 16;
 };
@@ -70,7 +74,8 @@ class FootprintProbes {
   int count_ = 0;
 };
 
-UvFootprint uv_footprint(const SurfaceHit& hit, const RayDifferential& ray);
+// `shape`, when given, is the shape that was hit: it fills dnormal_dx, dnormal_dy (two intersections per step).
+UvFootprint uv_footprint(const SurfaceHit& hit, const RayDifferential& ray, const Shape* shape = nullptr);
 // The anisotropic probes of the footprint at uv for a W x H map (see above). Non-finite footprints (grazing
 // rays) give one probe at kMaxLod; max_probes is clamped to [1, kMaxFootprintProbes].
 FootprintProbes footprint_probes(const Vec2& uv, const UvFootprint& footprint, uint32_t map_width, uint32_t map_height);

@@ -25,7 +25,7 @@ inline constexpr int kMaxSweepCells = 8;
 inline constexpr int kMaxSweepNormals = 32;
 
 struct SweptNormals {
-  std::vector<Vec2> normals;      // the cells' centres in s
+  std::vector<Vec2> normals;     // the cells' centres in s
   Mat2 residual = Mat2::Zero();  // each cell's sweep covariance
 };
 

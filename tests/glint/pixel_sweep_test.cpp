@@ -32,7 +32,8 @@ TEST(PixelSweep, CellsAverageLikeTheBoxPixel) {
     steps.col(0) = 30 * sigma_r * unit(rng) * Vec2(std::cos(a), std::sin(a));
     steps.col(1) = 4 * sigma_r * unit(rng) * Vec2(-std::sin(a + 0.3), std::cos(a + 0.3));
     const Vec2 s(0.1, -0.2);
-    const Vec2 n = s + steps * Vec2(unit(rng) - 0.5, unit(rng) - 0.5) + sigma_r * Vec2(unit(rng) - 0.5, unit(rng) - 0.5);
+    const Vec2 n =
+        s + steps * Vec2(unit(rng) - 0.5, unit(rng) - 0.5) + sigma_r * Vec2(unit(rng) - 0.5, unit(rng) - 0.5);
     const Mat2 c = sigma_r * sigma_r * Mat2::Identity();
     double box = 0.0;
     constexpr int kSteps = 200;
