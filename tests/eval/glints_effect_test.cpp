@@ -41,6 +41,20 @@ json scene_with(const json& effect, const std::string& map) {
   return testing::small_scene({{"a", glint_material(map, effect)}, {"b", plain}, {"c", plain}}, 40, 30);
 }
 
+// The effect at `spp` and a second reference (seed `other_seed`) against the reference of rays x rays per pixel,
+// on 4 x 4 blocks (relative L1 of block means): the effect's error and the reference's own floor, printed.
+struct BlockErrors {
+  double effect, floor;
+};
+BlockErrors block_errors(const Scene& scene, uint32_t spp, uint32_t rays, uint32_t other_seed, const char* label) {
+  const Image effect = render(scene, spp);
+  const Image reference = render(scene, 1, rays), other = render(scene, 1, rays, other_seed);
+  const BlockErrors e{compare_images(effect, reference, 4).block_relative_l1,
+                      compare_images(other, reference, 4).block_relative_l1};
+  std::printf("[ info ] %s: effect %.4f, reference floor %.4f (4 x 4 blocks)\n", label, e.effect, e.floor);
+  return e;
+}
+
 double mean(const Image& im) {
   double s = 0.0;
   for (const float v : im.pixels) s += v;
@@ -141,13 +155,24 @@ TEST(GlintsEffect, FlatMapMatchesItsReference) {
     testing::write_json(dir / "s.json", scene_json);
     const Scene scene = load_scene(dir / "s.json");
     bake_scene(scene);
-    const Image effect = render(scene, 16);
-    const Image reference = render(scene, 1, 16), other = render(scene, 1, 16, 7);
-    const double floor = compare_images(other, reference, 4).block_relative_l1;
-    const double error = compare_images(effect, reference, 4).block_relative_l1;
-    std::printf("[ info ] %s: effect %.4f, reference floor %.4f (4 x 4 blocks)\n", blending, error, floor);
-    EXPECT_LE(error, 2.0 * floor + 0.01) << blending;
+    const BlockErrors e = block_errors(scene, 16, 16, 7, blending);
+    EXPECT_LE(e.effect, 2.0 * e.floor + 0.01) << blending;
   }
+}
+
+// One shape under one light, with a glint material (sigma_r 0.01) on a flat map, written and baked in `dir`.
+Scene flat_glint_scene(const ScratchDir& dir, const json& camera, json shape, const json& light) {
+  testing::write_normal_map(dir / "flat.exr", 16, 16, [](uint32_t, uint32_t) { return Vec3(0, 0, 1); });
+  shape["material"] = "a";
+  const json material = {{"albedo", 0.02},
+                         {"specular", {{"roughness", 0.1}, {"f0", 0.9}}},
+                         {"normal_map", {{"path", "flat.exr"}}},
+                         {"effects", {{{"name", "glints"}, {"sigma_r", 0.01}, {"patch", 8}}}}};
+  testing::write_json(dir / "s.json",
+                      {{"camera", camera}, {"shapes", {shape}}, {"materials", {{"a", material}}}, {"lights", {light}}});
+  Scene scene = load_scene(dir / "s.json");
+  bake_scene(scene);
+  return scene;
 }
 
 // Each row's mean radiance (channel 0).
@@ -167,20 +192,10 @@ TEST(GlintsEffect, GrazingHighlightStaysWhereTheReferenceHasIt) {
   // and 0.004 at 4 spp (two 8 x 8-ray references differ by 0.05). Asserted: the brightest row, and the highlight's
   // energy (rows where the reference exceeds 10% of its peak; measured 1.10 of an 8 x 8-ray reference).
   ScratchDir dir("glints_grazing");
-  testing::write_normal_map(dir / "flat.exr", 16, 16, [](uint32_t, uint32_t) { return Vec3(0, 0, 1); });
-  const json scene_json = {
-      {"camera", {{"position", {0, 0.35, 3}}, {"look_at", {0, 0, -2}}, {"fov_y", 30}, {"width", 48}, {"height", 32}}},
-      {"shapes", {{{"type", "plane"}, {"size", {40, 40}}, {"uv_scale", {20, 20}}, {"material", "a"}}}},
-      {"materials",
-       {{"a",
-         {{"albedo", 0.02},
-          {"specular", {{"roughness", 0.1}, {"f0", 0.9}}},
-          {"normal_map", {{"path", "flat.exr"}}},
-          {"effects", {{{"name", "glints"}, {"sigma_r", 0.01}, {"patch", 8}}}}}}}},
-      {"lights", {{{"type", "point"}, {"position", {0, 1.0, -10}}, {"intensity", {200, 200, 200}}}}}};
-  testing::write_json(dir / "s.json", scene_json);
-  const Scene scene = load_scene(dir / "s.json");
-  bake_scene(scene);
+  const Scene scene = flat_glint_scene(
+      dir, {{"position", {0, 0.35, 3}}, {"look_at", {0, 0, -2}}, {"fov_y", 30}, {"width", 48}, {"height", 32}},
+      {{"type", "plane"}, {"size", {40, 40}}, {"uv_scale", {20, 20}}},
+      {{"type", "point"}, {"position", {0, 1.0, -10}}, {"intensity", {200, 200, 200}}});
   const std::vector<double> effect = row_means(render(scene, 4)), reference = row_means(render(scene, 1, 8));
   const auto brightest = [](const std::vector<double>& r) { return std::max_element(r.begin(), r.end()) - r.begin(); };
   const double peak = reference[size_t(brightest(reference))];
@@ -199,27 +214,12 @@ TEST(GlintsEffect, CurvedSurfaceHighlightMatchesItsReference) {
   // frame's turn the effect missed it: block L1 0.68 at 64 x 48 against 16 x 16 rays, 0.0094 with it (floor of two
   // references 0.0064).
   ScratchDir dir("glints_sphere");
-  testing::write_normal_map(dir / "flat.exr", 16, 16, [](uint32_t, uint32_t) { return Vec3(0, 0, 1); });
-  const json scene_json = {
-      {"camera", {{"position", {0, 0, 3}}, {"look_at", {0, 0, 0}}, {"fov_y", 20}, {"width", 40}, {"height", 30}}},
-      {"shapes",
-       {{{"type", "sphere"}, {"center", {0, 0, 0}}, {"radius", 0.5}, {"uv_scale", {4, 2}}, {"material", "a"}}}},
-      {"materials",
-       {{"a",
-         {{"albedo", 0.02},
-          {"specular", {{"roughness", 0.1}, {"f0", 0.9}}},
-          {"normal_map", {{"path", "flat.exr"}}},
-          {"effects", {{{"name", "glints"}, {"sigma_r", 0.01}, {"patch", 8}}}}}}}},
-      {"lights", {{{"type", "point"}, {"position", {1.5, 1.0, 3}}, {"intensity", {50, 50, 50}}}}}};
-  testing::write_json(dir / "s.json", scene_json);
-  const Scene scene = load_scene(dir / "s.json");
-  bake_scene(scene);
-  const Image effect = render(scene, 1);
-  const Image reference = render(scene, 1, 16), other = render(scene, 1, 16, 3);
-  const double floor = compare_images(other, reference, 4).block_relative_l1;
-  const double error = compare_images(effect, reference, 4).block_relative_l1;
-  std::printf("[ info ] sphere: effect %.4f, reference floor %.4f (4 x 4 blocks)\n", error, floor);
-  EXPECT_LE(error, 2.0 * floor + 0.005);
+  const Scene scene = flat_glint_scene(
+      dir, {{"position", {0, 0, 3}}, {"look_at", {0, 0, 0}}, {"fov_y", 20}, {"width", 40}, {"height", 30}},
+      {{"type", "sphere"}, {"center", {0, 0, 0}}, {"radius", 0.5}, {"uv_scale", {4, 2}}},
+      {{"type", "point"}, {"position", {1.5, 1.0, 3}}, {"intensity", {50, 50, 50}}});
+  const BlockErrors e = block_errors(scene, 1, 16, 3, "sphere");
+  EXPECT_LE(e.effect, 2.0 * e.floor + 0.005);
 }
 
 }  // namespace

@@ -373,14 +373,20 @@ TEST(GlintPndf, TraversalVisitsFewerNodesThanTexels) {
 
 // On a constant example every element is the same Gaussian around the constant normal with J = 0, so D_P equals
 // the point NDF exactly, for any footprint; and the point NDF integrates to 1.
+// A 64^2 example whose every texel has the normal components (0.2, -0.1), and its queries.
+struct ConstantExample {
+  NormalMap map{64, 64, std::vector<Vec3f>(64 * 64, Vec3f(0.2f, -0.1f, std::sqrt(1.0f - 0.05f)))};
+  RmqTable table = build_rmq_table(map, 16, 16, Progress::silent());
+  RmqTableView view = table.view();
+  GlintPointQuery q{map, 16, 1, GlintBlendMode::variance};
+  GlintRangeQuery r{q, view};
+};
+
 TEST(GlintPndf, ConstantExampleGivesThePointNdfForAnyFootprint) {
   const Vec2 c(0.2, -0.1);
-  NormalMap flat{64, 64, std::vector<Vec3f>(64 * 64, Vec3f(0.2f, -0.1f, std::sqrt(1.0f - 0.05f)))};
-  const RmqTable table = build_rmq_table(flat, 16, 16, Progress::silent());
-  const RmqTableView view = table.view();
-  const GlintPointQuery q(flat, 16, 1, GlintBlendMode::variance);
-  const GlintRangeQuery r(q, view);
-  const GlintPndf pndf(r, 0.01);
+  const ConstantExample example;
+  const GlintPointQuery& q = example.q;
+  const GlintPndf pndf(example.r, 0.01);
   std::mt19937_64 rng(4);
   std::uniform_real_distribution<double> v(-1.0, 1.0);
   for (int n = 0; n < 100; ++n) {
@@ -402,13 +408,10 @@ TEST(GlintPndf, ConstantExampleGivesThePointNdfForAnyFootprint) {
 // traversal, aggregation and brute force; a sweep that is not a covariance is refused.
 TEST(GlintPndf, ConstantExampleWithASweepGivesTheWidenedGaussian) {
   const Vec2 c(0.2, -0.1);
-  NormalMap flat{64, 64, std::vector<Vec3f>(64 * 64, Vec3f(0.2f, -0.1f, std::sqrt(1.0f - 0.05f)))};
-  const RmqTable table = build_rmq_table(flat, 16, 16, Progress::silent());
-  const RmqTableView view = table.view();
-  const GlintPointQuery q(flat, 16, 1, GlintBlendMode::variance);
-  const GlintRangeQuery r(q, view);
+  const ConstantExample example;
+  const GlintPointQuery& q = example.q;
   const double sigma_r = 0.01;
-  const GlintPndf pndf(r, sigma_r);
+  const GlintPndf pndf(example.r, sigma_r);
   const Vec2 n = q.evaluate(Vec2(3, 4)).n;  // the same everywhere
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> v(-1.0, 1.0);
