@@ -7,7 +7,8 @@
 # without the effect, examples/scenes/glints_plain.json), a second reference with another jitter seed (the
 # reference's own noise floor), compares each with the reference (per pixel, and the relative L1 of 8 x 8 pixel
 # block means: `compare --block 8`) and prints the times. The effect is within the goal where its block L1 is
-# at most twice the floor's.
+# at most twice the floor's. Then the same per shape and per light, at half the resolution: the scene with one shape
+# (plane, quad) or one point light (light0, light1, no sky) at a time, each with its own floor, one line each.
 #
 #   examples/run_glints.sh [MICROBAKE [OUT_DIR]]
 set -euo pipefail
@@ -36,4 +37,27 @@ done
 for name in glints_reference_seed1 glints glints_plain; do
   echo "== $name against the reference"
   "$exe" compare "$out/$name.exr" "$out/glints_reference.exr" --block 8
+done
+
+# Per shape and per light (half resolution): effect and floor on 8 x 8 blocks of the same reference.
+echo "== per shape and per light (half resolution; block L1 of 8 x 8 means, effect / floor of two references)"
+block_l1() { "$exe" compare "$1" "$2" --block 8 --format json | jq -r '.block_relative_l1'; }
+for variant in plane quad light0 light1; do
+  case "$variant" in
+    plane) pick='.shapes |= [.[0]]' ;;
+    quad) pick='.shapes |= [.[1]]' ;;
+    light0) pick='.lights |= [.[0]]' ;;
+    light1) pick='.lights |= [.[1]]' ;;
+  esac
+  dir="$out/$variant"
+  mkdir -p "$dir"
+  jq "$pick | .camera.width /= 2 | .camera.height /= 2 |
+      .materials[].normal_map.path |= (\"$maps/\" + (split(\"/\") | last))" "$scene" >"$dir/scene.json"
+  "$exe" bake "$dir/scene.json" --out-dir "$dir/assets" -q
+  "$exe" render "$dir/scene.json" --assets "$dir/assets" -q -o "$dir/effect.exr"
+  "$exe" render "$dir/scene.json" --reference 16 -q -o "$dir/reference.exr"
+  "$exe" render "$dir/scene.json" --reference 16 --seed 1 -q -o "$dir/reference_seed1.exr"
+  effect=$(block_l1 "$dir/effect.exr" "$dir/reference.exr")
+  floor=$(block_l1 "$dir/reference_seed1.exr" "$dir/reference.exr")
+  echo "$variant: effect $effect, floor $floor, ratio $(echo "scale=2; $effect / $floor" | bc)"
 done

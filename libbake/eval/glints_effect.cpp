@@ -4,42 +4,49 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <tuple>
 #include <utility>
+#include <vector>
 
 #include "formats/asset.h"
 #include "formats/error.h"
 #include "libbake/core/progress.h"
+#include "libbake/eval/uv_footprint.h"
 #include "libbake/glint/glint_surface.h"
 #include "libbake/glint/glint_surface_mapping.h"
 #include "libbake/glint/lut_asset.h"
+#include "libbake/glint/pixel_sweep.h"
 
 namespace mbk {
 namespace {
 
-// D(s) at a shading point, s = (h_x, h_y) in the tangent frame, for a pixel over which s sweeps with standard
-// deviation `spread` (the reference traces rays over the pixel instead, and ignores it).
-using GlintDistribution = std::function<double(const Vec2& s, double spread)>;
+// D(s) at a shading point, s = (h_x, h_y) in the tangent frame, for a pixel over which s moves by the columns of
+// `steps` per pixel step (the reference traces rays over the pixel instead, and ignores it).
+using GlintDistribution = std::function<double(const Vec2& s, const Mat2& steps)>;
 using DistributionAt = std::function<GlintDistribution(const ShadingContext& c)>;
 
-// The standard deviation of s = (h . T, h . B) over the pixel, for the light in direction l at `distance`:
-// h = (l + v) / |l + v| moves by dh = (I - h h^T)(dl + dv) / |l + v| per pixel step, with
-// dl = -(dp - l (l . dp)) / distance (0 for a directional light) and dv from the footprint; a box pixel spreads
-// each step's ds uniformly over one step, variance |ds|^2 / 12 per step, split evenly between the two components
-// of s (glint_pndf.h: "Directional spread").
-double half_vector_spread(const ShadingContext& c, const Vec3& l, double distance) {
+// ds per pixel step, s = (h . T, h . B), for the light in direction l at `distance`: h = (l + v) / |l + v| moves
+// by dh = (I - h h^T)(dl + dv) / |l + v| per step, with dl = -(dp - l (l . dp)) / distance (0 for a directional
+// light) and dv from the footprint, and on a curved surface the frame turns with the normal: to first order
+// dT = -N (T . dN), dB = -N (B . dN), adding -(h . N)(T . dN, B . dN) (glint_pndf.h: "Directional spread";
+// pixel_sweep.h: how it is used). At grazing angles the two steps differ by an order of magnitude.
+Mat2 half_vector_steps(const ShadingContext& c, const Vec3& l, double distance) {
   const Vec3 sum = l + c.to_viewer;
   const double length = sum.norm();
-  if (!(length > 1e-12)) return 0.0;
+  if (!(length > 1e-12)) return Mat2::Zero();
   const Vec3 h = sum / length;
-  double variance = 0.0;
-  for (const auto& [dp, dv] :
-       {std::pair{c.footprint.dp_dx, c.footprint.dview_dx}, std::pair{c.footprint.dp_dy, c.footprint.dview_dy}}) {
+  Mat2 steps;
+  int k = 0;
+  const UvFootprint& f = c.footprint;
+  for (const auto& [dp, dv, dn] :
+       {std::tuple{f.dp_dx, f.dview_dx, f.dnormal_dx}, std::tuple{f.dp_dy, f.dview_dy, f.dnormal_dy}}) {
     const Vec3 dl = std::isfinite(distance) ? Vec3(-(dp - l * l.dot(dp)) / distance) : Vec3::Zero();
     const Vec3 dh = ((dl + dv) - h * h.dot(dl + dv)) / length;
-    variance += (std::pow(dh.dot(c.frame.T), 2) + std::pow(dh.dot(c.frame.B), 2)) / 12.0;
+    const double turn = -h.dot(c.frame.N);
+    steps.col(k++) = Vec2(dh.dot(c.frame.T) + turn * c.frame.T.dot(dn), dh.dot(c.frame.B) + turn * c.frame.B.dot(dn));
   }
-  const double spread = std::sqrt(variance / 2.0);
-  return std::isfinite(spread) ? spread : 0.0;  // a grazing ray's infinite step: no spread rather than none at all
+  // A grazing ray's infinite step: no sweep rather than none at all.
+  return steps.allFinite() ? steps : Mat2::Zero();
 }
 
 class GlintShader : public MaterialShader {
@@ -56,9 +63,9 @@ class GlintShader : public MaterialShader {
     if (!(n.dot(v) > 0.0)) return out;
     const GlintDistribution d = at_(c);
     for_each_direct_light(*c.lighting, c.position, n, [&](const Vec3& l, const Vec3& e, double distance) {
-      const double spread = half_vector_spread(c, l, distance);
+      const Mat2 steps = half_vector_steps(c, l, distance);
       const Vec3 spec = evaluate_specular(
-          brdf, n, l, v, [&](const Vec3& h) { return d(Vec2(h.dot(c.frame.T), h.dot(c.frame.B)), spread); });
+          brdf, n, l, v, [&](const Vec3& h) { return d(Vec2(h.dot(c.frame.T), h.dot(c.frame.B)), steps); });
       out += (brdf.albedo / std::numbers::pi + spec).cwiseProduct(e) * n.dot(l);
     });
     return out;
@@ -106,7 +113,8 @@ ShaderPtr glints_effect_shader(const EffectShaderRequest& request) {
     const double sigma_r = settings.sigma_r;
     return std::make_shared<GlintShader>([r, sigma_r, W, H](const ShadingContext& c) {
       const Vec2 u = glint_target_point(c.uv, W, H);
-      return GlintDistribution([r, sigma_r, u](const Vec2& s, double) { return point_ndf(*r->point, u, sigma_r, s); });
+      return GlintDistribution(
+          [r, sigma_r, u](const Vec2& s, const Mat2&) { return point_ndf(*r->point, u, sigma_r, s); });
     });
   }
 
@@ -119,12 +127,23 @@ ShaderPtr glints_effect_shader(const EffectShaderRequest& request) {
   f->surface =
       GlintSurface::open(example->map, Asset::open(request.assets.at(0)), Asset::open(request.assets.at(1)), settings);
   return std::make_shared<GlintShader>([f, W, H](const ShadingContext& c) {
-    const GlintFootprint fp = glint_pixel_footprint(c.uv, c.footprint.duv_dx, c.footprint.duv_dy, W, H);
-    if (!std::isfinite(fp.sigma)) return GlintDistribution([](const Vec2&, double) { return 0.0; });  // grazing
-    return GlintDistribution([f, fp](const Vec2& s, double spread) {
-      GlintFootprint swept = fp;
-      swept.normal_spread = spread;
-      return f->surface->ndf(swept, s, false);
+    // The pixel's anisotropic footprint as probes along its major axis (glint_surface_mapping.h), equally weighted.
+    const FootprintProbes probes = footprint_probes(c.uv, c.footprint, W, H);
+    std::vector<GlintFootprint> footprints;
+    footprints.reserve(size_t(probes.size()));
+    for (const FootprintProbe& p : probes) {
+      footprints.push_back(glint_probe_footprint(p.uv, p.width, W, H));
+      if (!std::isfinite(footprints.back().sigma))
+        return GlintDistribution([](const Vec2&, const Mat2&) { return 0.0; });  // grazing
+    }
+    return GlintDistribution([f, footprints = std::move(footprints)](const Vec2& s, const Mat2& steps) {
+      const SweptNormals swept = pixel_sweep(s, steps, f->surface->pndf().sigma_r());
+      double sum = 0.0;
+      for (GlintFootprint footprint : footprints) {
+        footprint.sweep = swept.residual;
+        sum += f->surface->pndf().evaluate_mean(footprint, swept.normals, nullptr, true);
+      }
+      return sum / double(footprints.size());
     });
   });
 }

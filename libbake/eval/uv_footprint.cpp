@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace mbk {
 namespace {
@@ -26,15 +27,32 @@ Vec3 transfer(const SurfaceHit& h, const Vec3& D, const Vec3& dD) {
   return at_same_t + dt * D;
 }
 
+// The viewer-facing normal's change over one pixel step dD of the ray direction (uv_footprint.h).
+Vec3 normal_step(const Shape& shape, const Ray& ray, const Vec3& dD) {
+  const auto facing_normal = [&](double side) -> std::optional<Vec3> {
+    const Vec3 d = (ray.direction + side * 0.5 * dD).normalized();
+    const auto hit = intersect_shape(shape, Ray{ray.origin, d}, INFINITY);
+    if (!hit) return std::nullopt;
+    return hit->normal.dot(d) < 0.0 ? hit->normal : Vec3(-hit->normal);
+  };
+  const auto plus = facing_normal(1.0), minus = facing_normal(-1.0);
+  return plus && minus && dD.allFinite() ? Vec3(*plus - *minus) : Vec3::Zero();
+}
+
 }  // namespace
 
-UvFootprint uv_footprint(const SurfaceHit& hit, const RayDifferential& ray) {
+UvFootprint uv_footprint(const SurfaceHit& hit, const RayDifferential& ray, const Shape* shape) {
   const Vec3& D = ray.ray.direction;
   const Vec3 dp_dx = transfer(hit, D, ray.ddx), dp_dy = transfer(hit, D, ray.ddy);
   const double length = D.norm();
   const Vec3 d = D / length;
   const auto view_step = [&](const Vec3& dD) -> Vec3 { return -(dD - d * d.dot(dD)) / length; };
-  return {solve_uv(hit, dp_dx), solve_uv(hit, dp_dy), dp_dx, dp_dy, view_step(ray.ddx), view_step(ray.ddy)};
+  UvFootprint f{solve_uv(hit, dp_dx), solve_uv(hit, dp_dy), dp_dx, dp_dy, view_step(ray.ddx), view_step(ray.ddy)};
+  if (shape) {
+    f.dnormal_dx = normal_step(*shape, ray.ray, ray.ddx);
+    f.dnormal_dy = normal_step(*shape, ray.ray, ray.ddy);
+  }
+  return f;
 }
 
 FootprintProbes footprint_probes(const Vec2& uv, const UvFootprint& f, uint32_t map_width, uint32_t map_height) {
@@ -42,7 +60,7 @@ FootprintProbes footprint_probes(const Vec2& uv, const UvFootprint& f, uint32_t 
   const Vec2 size(map_width, map_height);
   const Vec2 a = f.duv_dx.cwiseProduct(size), b = f.duv_dy.cwiseProduct(size);
   if (!a.allFinite() || !b.allFinite()) {
-    probes.push_back({uv, kMaxLod});  // grazing ray: the footprint is unbounded
+    probes.push_back({uv, kMaxLod, INFINITY});  // grazing ray: the footprint is unbounded
     return probes;
   }
   // M M^T = a a^T + b b^T = [[pxx, q], [q, pyy]]; its eigenvalues are s1^2 >= s2^2. s2^2 = det(M)^2 / s1^2 avoids
@@ -55,15 +73,16 @@ FootprintProbes footprint_probes(const Vec2& uv, const UvFootprint& f, uint32_t 
   const double det = a.x() * b.y() - a.y() * b.x();
   const double s2 = s1 > 0.0 ? std::abs(det) / s1 : 0.0;
   if (!(s1 > 1.0)) {  // magnification, or a degenerate footprint
-    probes.push_back({uv, 0.0});
+    probes.push_back({uv, 0.0, s1});
     return probes;
   }
   const int cap = std::clamp(f.max_probes, 1, kMaxFootprintProbes);
   const double ratio = s2 > 0.0 ? s1 / s2 : double(cap);
   const int n = int(std::min({double(cap), std::ceil(ratio - 1e-9), std::ceil(s1)}));
-  const double lod = std::clamp(std::log2(std::max(s2, s1 / n)) - kLodOfBoxVariance, 0.0, kMaxLod);
+  const double width = std::max(s2, s1 / n);
+  const double lod = std::clamp(std::log2(width) - kLodOfBoxVariance, 0.0, kMaxLod);
   if (n == 1) {
-    probes.push_back({uv, lod});
+    probes.push_back({uv, lod, width});
     return probes;
   }
   // The major axis: the eigenvector of M M^T for s1^2, from whichever row of (M M^T - s1^2 I) is larger.
@@ -71,7 +90,7 @@ FootprintProbes footprint_probes(const Vec2& uv, const UvFootprint& f, uint32_t 
   const double len = axis.norm();
   axis = len > 0.0 ? Vec2(axis / len) : Vec2(1.0, 0.0);
   const Vec2 step = (s1 * axis).cwiseQuotient(size);  // the major axis's full length, in uv
-  for (int i = 0; i < n; ++i) probes.push_back({uv + ((i + 0.5) / n - 0.5) * step, lod});
+  for (int i = 0; i < n; ++i) probes.push_back({uv + ((i + 0.5) / n - 0.5) * step, lod, width});
   return probes;
 }
 

@@ -20,8 +20,9 @@
 //     lod = log2(w) - log2(sqrt(3))   (kLodOfBoxVariance = 0.79),
 // clamped at 0 (magnification). (lod = log2(w), the OpenGL rule, filters twice the box's variance: at ~5 texels
 // per pixel that alone doubled the filtered effects' error on the filtering report's middle sphere.) A circle (or
-// max_probes = 1) gives one probe of width s1. A footprint that is infinite (grazing rays) gives one probe at kMaxLod,
-// which every pyramid clamps to its coarsest level.
+// max_probes = 1) gives one probe of width s1; magnification (s1 <= 1) one probe at level 0 of width s1. A footprint
+// that is infinite (grazing rays) gives one probe at kMaxLod and infinite width, which every pyramid clamps to its
+// coarsest level.
 #pragma once
 
 #include <array>
@@ -39,6 +40,10 @@ struct UvFootprint {
   // viewer does not move). The glints effect turns them into the half vector's sweep over the pixel.
   Vec3 dp_dx = Vec3::Zero(), dp_dy = Vec3::Zero();
   Vec3 dview_dx = Vec3::Zero(), dview_dy = Vec3::Zero();
+  // The viewer-facing surface normal's change per pixel step on a curved surface: the normals where the rays
+  // half a step either side meet the same shape, differenced (zero where either misses it, or when no shape was
+  // given). The glints effect turns it into the tangent frame's turn over the pixel.
+  Vec3 dnormal_dx = Vec3::Zero(), dnormal_dy = Vec3::Zero();
   // The cap on anisotropic probes per lookup (`render --max-probes`; 1 = isotropic filtering).
   int max_probes = 16;
 };
@@ -47,10 +52,13 @@ inline constexpr double kMaxLod = 64.0;
 inline constexpr double kLodOfBoxVariance = 0.79248125036057812;  // log2(sqrt(3)), see above
 inline constexpr int kMaxFootprintProbes = 64;
 
-// One trilinear lookup of an anisotropic footprint: where, and at which level of detail.
+// One lookup of an anisotropic footprint: where, at which level of detail, and the box width w it stands for
+// (texels of the W x H map; +inf for a grazing ray). Trilinear lookups use lod; the glints P-NDF, which filters
+// by a Gaussian footprint of its own, uses width.
 struct FootprintProbe {
   Vec2 uv = Vec2::Zero();
   double lod = 0.0;
+  double width = 0.0;
 };
 
 // The probes covering a footprint, each of weight 1 / size().
@@ -66,7 +74,8 @@ class FootprintProbes {
   int count_ = 0;
 };
 
-UvFootprint uv_footprint(const SurfaceHit& hit, const RayDifferential& ray);
+// `shape`, when given, is the shape that was hit: it fills dnormal_dx, dnormal_dy (two intersections per step).
+UvFootprint uv_footprint(const SurfaceHit& hit, const RayDifferential& ray, const Shape* shape = nullptr);
 // The anisotropic probes of the footprint at uv for a W x H map (see above). Non-finite footprints (grazing
 // rays) give one probe at kMaxLod; max_probes is clamped to [1, kMaxFootprintProbes].
 FootprintProbes footprint_probes(const Vec2& uv, const UvFootprint& footprint, uint32_t map_width, uint32_t map_height);

@@ -9,25 +9,33 @@
 // Truncation (the SAME in every evaluation, so that traversal == brute force up to rounding):
 // - footprint: the texels whose centres lie in the square |u_t - c|_inf <= 3 sigma_p (footprint_texels());
 // - normal: element t counts at s only if s lies in its element bounds (blended_range.h: the blend of its four
-//   example texels' leaf intervals, the reach of its sub-elements) widened by 4 sigma per component, where
-//   sigma = sqrt(sigma_r^2 + spread^2) with the footprint's normal spread (below);
+//   example texels' leaf intervals, the reach of its sub-elements) widened by 4 sqrt(C_ii) in component i,
+//   C the elements' normal covariance (sigma_r^2 I plus the footprint's sweep, below): the box holds C's
+//   4-sigma ellipse;
 // - position: the element's Gaussian is integrated over the whole plane (the 3 sigma_h spatial cut-off only
 //   sizes the leaf intervals).
 // Directional spread: [Wang20] and [Yan16] evaluate D_P at one s per pixel, as if the half vector were the same
 // over the whole pixel. Under a point light or a perspective camera it sweeps s across the pixel (by ds/dx,
-// ds/dy per pixel step); a renderer that shades a pixel once passes that sweep as footprint.normal_spread (the
-// standard deviation of s over the pixel), and every element is evaluated with sigma in place of sigma_r: the
-// elements' normal Gaussians convolved with the sweep, taken isotropic and independent of position. Deviation
-// from the papers, measured: a flat map under two point lights at 96 x 54 rendered its highlights 29% too bright
-// in one 8 x 8 block and 2% too dark in another against 16 x 16 rays per pixel (test:
-// GlintsEffect.FlatMapMatchesItsReference).
+// ds/dy per pixel step); a renderer that shades a pixel once cuts that sweep into cells (pixel_sweep.h), averages
+// D_P over their centres (evaluate_mean) and passes each cell's own sweep as footprint.sweep, the covariance S of
+// s over the cell, and every element is evaluated with the normal covariance
+// C = sigma_r^2 I + S in place of sigma_r^2 I: the elements' normal Gaussians convolved with the sweep, taken
+// independent of position. C is anisotropic in general (at grazing angles s sweeps across the view many times
+// faster than along it), so the elements are evaluated in whitened normals: with W = C^(-1/2) (symmetric),
+// exp(-(s - n)^T C^-1 (s - n) / 2) = exp(-|W s - W n|^2 / 2), i.e. the element with W n, W J evaluated at W s
+// with unit roughness (position_normal_element.h), and D_P picks up det W from the change of variables
+// (the masses below are integrals over whitened normals). Deviation from the papers, measured: a flat map under
+// two point lights at 96 x 54 rendered its highlights 29% too bright in one 8 x 8 block and 2% too dark in
+// another against 16 x 16 rays per pixel without the sweep (test: GlintsEffect.FlatMapMatchesItsReference); an
+// isotropic sweep (the mean of the two variances) streaked a grazing highlight toward the horizon (test:
+// GlintsEffect.GrazingHighlightStaysWhereTheReferenceHasIt).
 // Normalisation: D_P(s) = sum k(s) / sum m over the footprint's sub-elements, i.e. the untruncated D_P would
-// integrate to exactly 1 over s; the normal truncation removes the mass beyond 4 sigma_r (< 1e-4).
+// integrate to exactly 1 over s; the normal truncation removes the mass beyond 4 sigma per component (< 1e-4).
 //
 // Traversal (Algorithm 3 with [Wang20] Sec. 5.2): the footprint's texel rectangle is split at target patch
 // borders into one rectangle per covered patch, however many (never clamped in size); each is a root node.
 // A node of more than one texel is pruned when s lies outside its range bounds (blended_range.h) widened by
-// 4 sigma_r, else split into (up to) four halves; a one-texel node is the element test above. Node bounds
+// the normal cut-off, else split into (up to) four halves; a one-texel node is the element test above. Node bounds
 // contain every element bound of the node, so pruning drops only elements that would add exactly 0.
 // Deviation [Wang20]: Alg. 3 starts from a power-of-two square grown past the footprint; here nodes are the
 // footprint's own rectangles halved, so no node reads texels outside the footprint (same result, fewer
@@ -35,23 +43,28 @@
 //
 // Aggregation (deviation [Wang20]: on maps that are mostly flat ground nearly every texel reaches the half
 // vectors that make glints, so pruning alone visits every texel of the footprint): with `aggregate`, a node
-// whose bounds are at most kGlintAggregateWidthSigmas (0.01) sigma wide in both components, c their centre, is
-// summed in closed form as if every element were N(s; c, sigma^2) times its mass (exact for elements with J = 0
-// and n = c: position_normal_element.h Eq. 1 reduces to m N(s; n, sigma^2)); the masses are separable, so a
-// node costs two differences of running sums. Bound: every element of such a node has its normals within the
-// node's box up to its sub-elements' spatial cut-off (3 sigma_h / K: 0.54% of its mass beyond), so for
-// |s - c| <= 4.02 sigma (else the node is pruned) replacing N(s; n, .) by N(s; c, .) changes it by a factor
-// within exp(+-(4.02 * 0.0071 + 0.0071^2 / 2)) = 1 +- 2.9%; hence |D_agg - D| <= 0.03 D + 0.006 / (2 pi sigma^2)
-// (test: GlintPndf.AggregatedTraversalWithinItsBound_1000Queries).
+// whose bounds are at most kGlintAggregateWidthSigmas (0.01) sigma_min wide in both components (sigma_min^2 the
+// smaller eigenvalue of C), c their centre, is summed in closed form as if every element were N(s; c, C) times its
+// mass (exact for elements with J = 0 and n = c: position_normal_element.h Eq. 1 reduces to m N(s; n, C)); the
+// masses are separable, so a node costs two differences of running sums. Bound, in whitened normals (|W x| <=
+// |x| / sigma_min): every element of such a node has its normals within the node's box up to its
+// sub-elements' spatial cut-off (3 sigma_h / K: 0.54% of its mass beyond), i.e. within 0.0071 of c whitened, so
+// where the whitened distance r = |W (s - c)| is at most 4.02, replacing N(s; n, C) by N(s; c, C) changes it by a
+// factor within exp(+-(4.02 * 0.0071 + 0.0071^2 / 2)) = 1 +- 2.9%, and beyond that every element's Gaussian is
+// below e^-8 of its peak, so its change is below 1e-5 of the peak; hence |D_agg - D| <= 0.03 D + 0.006 peak,
+// peak = 1 / (2 pi sqrt(det C)) (test: GlintPndf.AggregatedTraversalWithinItsBound_1000Queries, isotropic and
+// anisotropic sweeps).
 // Sampling ([Wang20] Sec. 5.3): a sub-element is picked with probability m / sum m (m is separable in the two
-// axes, so two 1-D inversions), a normal is drawn from k / m, and the draw restarts when that normal lies
-// outside its texel's truncation box: the samples' density is then exactly proportional to D_P.
+// axes, so two 1-D inversions), a normal is drawn from k / m (in whitened normals, then mapped back by C^(1/2)), and
+// the draw restarts when that normal lies outside its texel's truncation box: the samples' density is then exactly
+// proportional to D_P.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "libbake/glint/blended_range.h"
@@ -65,7 +78,7 @@ struct TexelRange {
 };
 
 // The texels whose centres lie in the footprint's truncation square. Throws Error(invalid_input) for a
-// non-finite centre or a sigma that is not finite and > 0.
+// non-finite centre, a sigma that is not finite and > 0, or a sweep that is not a finite covariance.
 TexelRange footprint_texels(const GlintFootprint& footprint);
 
 // The reference the P-NDF approximates ([Wang20] Eq. 1 before Yan16's elements): the NDF of ONE point u of the
@@ -94,6 +107,10 @@ class GlintPndf {
   // nodes in closed form (rules above: within the stated bound of brute force, not equal to it).
   double evaluate(const GlintFootprint& footprint, const Vec2& s, PndfStatistics* stats = nullptr,
                   bool aggregate = false) const;
+  // The mean of D_P over several normals in one traversal (a node is pruned when every normal is outside it;
+  // the leaves share their sub-elements): what a renderer needs for the box sweep below. 0 for no normals.
+  double evaluate_mean(const GlintFootprint& footprint, std::span<const Vec2> s, PndfStatistics* stats = nullptr,
+                       bool aggregate = false) const;
   // D_P(s) summed over every texel of the footprint (the reference the traversal must equal).
   double evaluate_brute_force(const GlintFootprint& footprint, const Vec2& s) const;
   // A normal drawn with density D_P (rules above), from `uniform` (numbers in [0, 1)); nullopt when the
@@ -104,10 +121,14 @@ class GlintPndf {
   std::optional<Vec2> sample_once(const GlintFootprint& footprint, const std::function<double()>& uniform) const;
 
  private:
-  // sigma = normal_sigma(footprint), computed once per evaluation.
-  double element_term(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Vec2& s, double sigma) const;
-  double normal_sigma(const GlintFootprint& footprint) const;  // sigma_r widened by the footprint's spread
-  bool outside(const RmqBounds& b, const Vec2& s, double sigma) const;
+  struct NormalKernel;  // the elements' normal covariance C and its whitening (glint_pndf.cpp)
+  struct Normals;       // the normals of one evaluation, whitened, and their box (glint_pndf.cpp)
+  NormalKernel normal_kernel(const GlintFootprint& footprint) const;
+  // Element t's sum of k over its sub-elements and the normals, in whitened normals.
+  double element_term(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Normals& normals,
+                      const NormalKernel& kernel) const;
+  // Whether the box of normals lies outside the bounds b widened by the normal cut-off.
+  static bool outside(const RmqBounds& b, const RmqBounds& normals, const NormalKernel& kernel);
   struct Query;  // what one traversal shares with every node (glint_pndf.cpp)
   double traverse(const TargetNode& node, const Query& q, PndfStatistics& stats) const;
   std::optional<Vec2> draw(const GlintFootprint& footprint, const TexelRange& t, const std::vector<double>& wx,

@@ -1,8 +1,7 @@
 // A glint material as the evaluator shades it ([Wang20]): the example normal map, its two baked assets (`lut`
 // and `rmq`, read through formats/ only) and the settings of the infinite microstructure, assembled into the
-// point query, the range query and the P-NDF. The evaluator's shader calls ndf() with the pixel's footprint
-// (glint_surface_mapping.h) and the half vector's normal components; its reference shader calls the same with
-// `reference` set, which sums every texel of the footprint instead of traversing.
+// point query, the range query and the P-NDF. The evaluator's shader evaluates pndf() over the pixel's footprint
+// (glint_surface_mapping.h) at the half vector's normal components (pixel_sweep.h), by the aggregated traversal.
 #pragma once
 
 #include <cstdint>
@@ -37,11 +36,6 @@ class GlintSurface {
 
   const GlintSettings& settings() const { return settings_; }
   const GlintPndf& pndf() const { return pndf_; }
-  // D_P(s) over the footprint: by the aggregated traversal (glint_pndf.h: within its stated bound), or by brute
-  // force when `reference`.
-  double ndf(const GlintFootprint& footprint, const Vec2& s, bool reference) const {
-    return reference ? pndf_.evaluate_brute_force(footprint, s) : pndf_.evaluate(footprint, s, nullptr, true);
-  }
 
   GlintSurface(const GlintSurface&) = delete;
   GlintSurface& operator=(const GlintSurface&) = delete;

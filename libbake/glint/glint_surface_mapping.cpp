@@ -17,12 +17,10 @@ Mat2 glint_tangent_jacobian(const Mat2& target_jacobian, uint32_t width, uint32_
   return target_jacobian * scale;
 }
 
-GlintFootprint glint_pixel_footprint(const Vec2& uv, const Vec2& duv_dx, const Vec2& duv_dy, uint32_t width,
-                                     uint32_t height) {
-  const auto texels = [&](const Vec2& d) { return Vec2(d.x() * width, d.y() * height).norm(); };
-  const double longer = std::max(texels(duv_dx), texels(duv_dy));
+GlintFootprint glint_probe_footprint(const Vec2& uv, double box_width, uint32_t width, uint32_t height) {
   // Non-finite (grazing) stays non-finite, for footprint_texels() to refuse.
-  const double sigma = std::isfinite(longer) ? std::max(longer / std::sqrt(12.0), kGlintMinFootprintSigma) : longer;
+  const double sigma =
+      std::isfinite(box_width) ? std::max(box_width / std::sqrt(12.0), kGlintMinFootprintSigma) : box_width;
   return {glint_target_point(uv, width, height), sigma};
 }
 

@@ -10,11 +10,14 @@
 // -u_1 (up the rows). Normal components need no flip: n_x is along tangent +u, n_y along +v in both (+Y
 // convention). Derivatives with respect to uv: dn/duv = J * diag(W, -H) (tangent_jacobian()).
 //
-// Footprint: the pixel's uv derivatives (ray differentials, libbake/eval/uv_footprint.h) in target texels,
-// isotropic: sigma_p = max(max(|du/dx|, |du/dy|) / sqrt(12), kGlintMinFootprintSigma) texels: the standard
-// deviation of a one-pixel box along the footprint's longer axis (the variance of the box-filtered pixel the
-// reference resolves with many rays), so the Gaussian truncated at 3 sigma_p spans 1.7 pixels; the floor keeps
-// at least one texel centre in any footprint (magnification shows the blend of the nearest elements).
+// Footprint: the evaluator covers a pixel's anisotropic footprint by probes along its major axis
+// (libbake/eval/uv_footprint.h footprint_probes: N probes, each standing for a box of width w texels), and the
+// P-NDF is the mean of the probes' P-NDFs, each over the isotropic Gaussian of sigma_p = max(w / sqrt(12),
+// kGlintMinFootprintSigma) texels: the standard deviation of the box (the variance of the box-filtered pixel the
+// reference resolves with many rays), so the Gaussian truncated at 3 sigma_p spans 1.7 w; the floor keeps at least
+// one texel centre in any footprint (magnification shows the blend of the nearest elements). An elongated footprint
+// of s1 x s2 texels thus costs N w^2 ~ s1 s2 texels, not the s1^2 of one circle over its longer axis, which also
+// blurred the glints over many times the pixel's area at grazing angles.
 #pragma once
 
 #include <cstdint>
@@ -30,9 +33,8 @@ inline constexpr double kGlintMinFootprintSigma = 0.5;  // texels
 Vec2 glint_target_point(const Vec2& uv, uint32_t width, uint32_t height);
 // dn/duv from the point query's J = dn/du (rows n_x, n_y; columns d/du, d/dv).
 Mat2 glint_tangent_jacobian(const Mat2& target_jacobian, uint32_t width, uint32_t height);
-// The footprint of a pixel at uv with uv derivatives duv_dx, duv_dy (above). Non-finite derivatives (grazing
-// rays) give a non-finite sigma, which footprint_texels() refuses: the caller skips such pixels.
-GlintFootprint glint_pixel_footprint(const Vec2& uv, const Vec2& duv_dx, const Vec2& duv_dy, uint32_t width,
-                                     uint32_t height);
+// The footprint of one probe at uv standing for a box of `box_width` texels (above). A non-finite width (a grazing
+// ray) gives a non-finite sigma, which footprint_texels() refuses: the caller skips such pixels.
+GlintFootprint glint_probe_footprint(const Vec2& uv, double box_width, uint32_t width, uint32_t height);
 
 }  // namespace mbk

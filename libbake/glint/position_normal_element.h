@@ -27,9 +27,10 @@ namespace mbk {
 struct GlintFootprint {
   Vec2 center;         // c, target texels
   double sigma = 1.0;  // sigma_p, target texels (> 0)
-  // How far the pixel's half vector sweeps in s (standard deviation, normal units, >= 0): the P-NDF evaluates
-  // its elements with sqrt(sigma_r^2 + spread^2) in place of sigma_r (glint_pndf.h).
-  double normal_spread = 0.0;
+  // How the pixel's half vector sweeps in s: the covariance of s over the pixel (normal units^2, symmetric,
+  // positive semi-definite). The P-NDF evaluates its elements with the normal covariance sigma_r^2 I + this in
+  // place of sigma_r^2 I (glint_pndf.h, "Directional spread").
+  Mat2 sweep = Mat2::Zero();
 };
 
 struct PositionNormalElement {

@@ -40,6 +40,16 @@ const Fixture& fixture() {
   return f;
 }
 
+// A pixel's half-vector sweep (glint_pndf.h, "Directional spread"): a covariance with standard deviations up to
+// 10 sigma_r along a random direction and up to sigma_r across it, as at grazing angles.
+Mat2 random_sweep(std::mt19937_64& rng, double sigma_r) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double angle = 2 * std::numbers::pi * unit(rng), along = 10 * sigma_r * unit(rng), across = sigma_r * unit(rng);
+  const Vec2 u(std::cos(angle), std::sin(angle)), w(-u.y(), u.x());
+  const Mat2 c = along * along * u * u.transpose() + across * across * w * w.transpose();
+  return 0.5 * (c + c.transpose());  // exactly symmetric
+}
+
 // A query: a footprint and a normal s near the normals it holds (the point query at a random point of the
 // footprint, moved by up to a few sigma_r), so that most answers are not 0.
 struct Query {
@@ -54,7 +64,13 @@ Query random_query(const GlintPointQuery& q, std::mt19937_64& rng, double sigma_
   out.footprint.sigma = width / (2 * kGlintFootprintCutoffSigmas);
   const Vec2 inside = out.footprint.center + width * Vec2(unit(rng) - 0.5, unit(rng) - 0.5);
   out.s = q.evaluate(inside).n + 3 * sigma_r * Vec2(2 * unit(rng) - 1, 2 * unit(rng) - 1);
+  if (unit(rng) < 0.4) out.footprint.sweep = random_sweep(rng, sigma_r);
   return out;
+}
+
+// The peak of the elements' normal Gaussian, 1 / (2 pi sqrt(det C)) with C = sigma_r^2 I + the sweep.
+double normal_peak(double sigma_r, const Mat2& sweep) {
+  return 1.0 / (2.0 * std::numbers::pi * std::sqrt((sigma_r * sigma_r * Mat2::Identity() + sweep).determinant()));
 }
 
 TEST(GlintPndf, TraversalEqualsBruteForce_1000Queries_Footprints1To256_AllModes) {
@@ -94,6 +110,34 @@ TEST(GlintPndf, TraversalEqualsBruteForce_1000Queries_Footprints1To256_AllModes)
   EXPECT_GE(nonzero, queries / 2) << "too many queries answered 0 to test much";
   std::printf("[ info ] %d queries, %d non-zero; %llu nodes visited for %llu footprint texels\n", queries, nonzero,
               (unsigned long long)nodes, (unsigned long long)texels);
+}
+
+// evaluate_mean over several normals in one traversal (a pixel's sweep cells, pixel_sweep.h) against the mean of
+// brute force at each, 1e-5 relative, every mode, 1 to 12 normals spread over up to 20 sigma_r.
+TEST(GlintPndf, MeanOverNormalsEqualsTheMeanOfBruteForce) {
+  const Fixture& f = fixture();
+  std::mt19937_64 rng(31);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const RmqTableView view = f.rmq16.view();
+  int nonzero = 0;
+  for (const GlintBlendMode mode : kModes) {
+    const GlintPointQuery q(f.example, 32, 9, mode, &f.lut.tables);
+    const GlintRangeQuery r(q, view);
+    const GlintPndf pndf(r, 0.01);
+    for (int n = 0; n < 50; ++n) {
+      const Query base = random_query(q, rng, 0.01, std::exp(std::log(64.0) * unit(rng)));
+      std::vector<Vec2> normals(size_t(1 + int(12 * unit(rng))));
+      double brute = 0.0;
+      for (Vec2& s : normals) {
+        s = base.s + 0.2 * Vec2(unit(rng) - 0.5, unit(rng) - 0.5);
+        brute += pndf.evaluate_brute_force(base.footprint, s) / double(normals.size());
+      }
+      const double mean = pndf.evaluate_mean(base.footprint, normals);
+      ASSERT_NEAR(mean, brute, 1e-5 * brute) << glint_blend_mode_name(mode) << " " << normals.size() << " normals";
+      nonzero += brute > 0.0;
+    }
+  }
+  EXPECT_GT(nonzero, 150);
 }
 
 // Eq. (1) of position_normal_element.h against a midpoint rule over u (step 0.02 texels over +/- 8 sigma of
@@ -152,8 +196,9 @@ TEST(GlintPndf, ElementIntegralStaysFiniteForHugeJacobians) {
 }
 
 // The aggregated traversal (glint_pndf.h, "Aggregation") against brute force on >= 1,000 random queries per map,
-// within the stated bound |D_agg - D| <= 0.03 D + 0.006 / (2 pi sigma^2): maps of smooth bumps and of flat
-// ground cut by scratches (where aggregation pays), every blend mode, footprints 1 to 256 texels wide.
+// within the stated bound |D_agg - D| <= 0.03 D + 0.006 / (2 pi sqrt(det C)): maps of smooth bumps and of flat
+// ground cut by scratches (where aggregation pays), every blend mode, footprints 1 to 256 texels wide, 40% of
+// them with an anisotropic sweep.
 TEST(GlintPndf, AggregatedTraversalWithinItsBound_1000Queries) {
   const NormalMap scratches = generate_normal_map("scratches", {128, 128}, 2, Progress::silent());
   const BakedLut scratches_lut = bake_standardization_lut(scratches, kLutDefaultSize, Progress::silent());
@@ -181,7 +226,7 @@ TEST(GlintPndf, AggregatedTraversalWithinItsBound_1000Queries) {
         PndfStatistics stats;
         const double fast = pndf.evaluate(query.footprint, query.s, &stats, true);
         const double exact = pndf.evaluate_brute_force(query.footprint, query.s);
-        const double peak = 1.0 / (2.0 * std::numbers::pi * sigma_r * sigma_r);
+        const double peak = normal_peak(sigma_r, query.footprint.sweep);
         aggregated += stats.nodes_aggregated;
         ASSERT_LE(std::abs(fast - exact), 0.03 * exact + 0.006 * peak + 1e-12)
             << glint_blend_mode_name(mode) << " width " << width << ": " << fast << " vs " << exact;
@@ -235,8 +280,9 @@ TEST(GlintPndf, SampleHistogramMatchesPndf_RelativeL1Within2Percent) {
     const GlintPointQuery q(f.example, 32, 8, mode, &f.lut.tables);
     const GlintRangeQuery r(q, view);
     const GlintPndf pndf(r, 0.01);
-    const GlintFootprint fp{Vec2(412.3, -96.6), 2.0};
+    GlintFootprint fp{Vec2(412.3, -96.6), 2.0};
     std::mt19937_64 rng(77);
+    if (mode == GlintBlendMode::linear) fp.sweep << 2.5e-4, 1e-4, 1e-4, 1e-4;  // anisotropic: drawn by C^(1/2)
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     const std::function<double()> uniform = [&] { return unit(rng); };
     constexpr int kSamples = 1000000;
@@ -327,14 +373,20 @@ TEST(GlintPndf, TraversalVisitsFewerNodesThanTexels) {
 
 // On a constant example every element is the same Gaussian around the constant normal with J = 0, so D_P equals
 // the point NDF exactly, for any footprint; and the point NDF integrates to 1.
+// A 64^2 example whose every texel has the normal components (0.2, -0.1), and its queries.
+struct ConstantExample {
+  NormalMap map{64, 64, std::vector<Vec3f>(64 * 64, Vec3f(0.2f, -0.1f, std::sqrt(1.0f - 0.05f)))};
+  RmqTable table = build_rmq_table(map, 16, 16, Progress::silent());
+  RmqTableView view = table.view();
+  GlintPointQuery q{map, 16, 1, GlintBlendMode::variance};
+  GlintRangeQuery r{q, view};
+};
+
 TEST(GlintPndf, ConstantExampleGivesThePointNdfForAnyFootprint) {
   const Vec2 c(0.2, -0.1);
-  NormalMap flat{64, 64, std::vector<Vec3f>(64 * 64, Vec3f(0.2f, -0.1f, std::sqrt(1.0f - 0.05f)))};
-  const RmqTable table = build_rmq_table(flat, 16, 16, Progress::silent());
-  const RmqTableView view = table.view();
-  const GlintPointQuery q(flat, 16, 1, GlintBlendMode::variance);
-  const GlintRangeQuery r(q, view);
-  const GlintPndf pndf(r, 0.01);
+  const ConstantExample example;
+  const GlintPointQuery& q = example.q;
+  const GlintPndf pndf(example.r, 0.01);
   std::mt19937_64 rng(4);
   std::uniform_real_distribution<double> v(-1.0, 1.0);
   for (int n = 0; n < 100; ++n) {
@@ -349,6 +401,41 @@ TEST(GlintPndf, ConstantExampleGivesThePointNdfForAnyFootprint) {
     for (double x = 0.2 - 0.08; x < 0.2 + 0.08; x += step) total += point_ndf(q, Vec2(3, 4), 0.01, Vec2(x, y));
   EXPECT_NEAR(total * step * step, 1.0, 1e-6);
   EXPECT_THROW(point_ndf(q, Vec2(0, 0), 0.0, c), Error);
+}
+
+// With a sweep S the same elements are the Gaussian N(s; n, sigma_r^2 I + S) (glint_pndf.h, "Directional
+// spread"), in closed form: the whitening and its det factor, for anisotropic and correlated sweeps, by
+// traversal, aggregation and brute force; a sweep that is not a covariance is refused.
+TEST(GlintPndf, ConstantExampleWithASweepGivesTheWidenedGaussian) {
+  const Vec2 c(0.2, -0.1);
+  const ConstantExample example;
+  const GlintPointQuery& q = example.q;
+  const double sigma_r = 0.01;
+  const GlintPndf pndf(example.r, sigma_r);
+  const Vec2 n = q.evaluate(Vec2(3, 4)).n;  // the same everywhere
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> v(-1.0, 1.0);
+  for (int k = 0; k < 200; ++k) {
+    GlintFootprint fp{Vec2(100 * v(rng), 100 * v(rng)), 0.5 + 10 * std::abs(v(rng))};
+    fp.sweep = random_sweep(rng, sigma_r);
+    const Mat2 cov = sigma_r * sigma_r * Mat2::Identity() + fp.sweep;
+    const Vec2 s = c + 0.05 * Vec2(v(rng), v(rng));
+    const Vec2 d = s - n;
+    const double gaussian =
+        std::exp(-0.5 * d.dot(cov.inverse() * d)) / (2 * std::numbers::pi * std::sqrt(cov.determinant()));
+    // Inside the truncation box (4 sqrt(C_ii) per component) the elements are whole; outside they are 0.
+    const bool inside = std::abs(d.x()) <= 4 * std::sqrt(cov(0, 0)) && std::abs(d.y()) <= 4 * std::sqrt(cov(1, 1));
+    const double expected = inside ? gaussian : 0.0;
+    EXPECT_NEAR(pndf.evaluate(fp, s), expected, 1e-9 * expected + 1e-12) << k;
+    EXPECT_NEAR(pndf.evaluate(fp, s, nullptr, true), expected, 1e-9 * expected + 1e-12) << k;
+    EXPECT_NEAR(pndf.evaluate_brute_force(fp, s), expected, 1e-9 * expected + 1e-12) << k;
+  }
+  GlintFootprint bad{Vec2(0, 0), 1.0};
+  for (const Mat2& sweep : {Mat2{{-1e-4, 0.0}, {0.0, 1e-4}}, Mat2{{1e-4, 2e-4}, {2e-4, 1e-4}},
+                            Mat2{{1e-4, 0.0}, {1e-5, 1e-4}}, Mat2{{NAN, 0.0}, {0.0, 1e-4}}}) {
+    bad.sweep = sweep;
+    EXPECT_THROW(pndf.evaluate(bad, c), Error);
+  }
 }
 
 }  // namespace

@@ -47,12 +47,12 @@ TEST(GlintSurfaceMapping, TangentJacobianOfAnIntegrableMapIsSymmetricOnlyWithThe
   EXPECT_LT(sym_noflip, 0.05 * anti_noflip);
 }
 
-TEST(GlintSurfaceMapping, PixelFootprintIsTheLongerAxisBoxDeviationWithAFloor) {
-  const GlintFootprint f = glint_pixel_footprint(Vec2(0.5, 0.5), Vec2(0.1, 0), Vec2(0, 0.02), 100, 100);
+TEST(GlintSurfaceMapping, ProbeFootprintIsTheBoxDeviationWithAFloor) {
+  const GlintFootprint f = glint_probe_footprint(Vec2(0.5, 0.5), 10.0, 100, 100);
   EXPECT_EQ(f.center, Vec2(50, 50));
-  EXPECT_NEAR(f.sigma, 10.0 / std::sqrt(12.0), 1e-12);  // |du/dx| = 10 texels
-  EXPECT_EQ(glint_pixel_footprint(Vec2(0, 0), Vec2(1e-6, 0), Vec2(0, 1e-6), 100, 100).sigma, kGlintMinFootprintSigma);
-  EXPECT_FALSE(std::isfinite(glint_pixel_footprint(Vec2(0, 0), Vec2(INFINITY, 0), Vec2(0, 0), 100, 100).sigma));
+  EXPECT_NEAR(f.sigma, 10.0 / std::sqrt(12.0), 1e-12);  // a box of 10 texels
+  EXPECT_EQ(glint_probe_footprint(Vec2(0, 0), 1e-4, 100, 100).sigma, kGlintMinFootprintSigma);
+  EXPECT_FALSE(std::isfinite(glint_probe_footprint(Vec2(0, 0), INFINITY, 100, 100).sigma));
 }
 
 }  // namespace

@@ -49,8 +49,8 @@ TEST(GlintSurface, AssetsReadBackAnswerLikeTheInMemoryTables) {
     const GlintFootprint fp{Vec2(pos(rng), pos(rng)), 0.5 + 4 * unit(rng)};
     const Vec2 s = q.evaluate(fp.center).n + Vec2(0.02 * unit(rng), 0.02 * unit(rng));
     const double expected = pndf.evaluate(fp, s);
-    EXPECT_EQ(surface->ndf(fp, s, false), expected);
-    EXPECT_NEAR(surface->ndf(fp, s, true), expected, 1e-5 * expected);
+    EXPECT_EQ(surface->pndf().evaluate(fp, s), expected);
+    EXPECT_NEAR(surface->pndf().evaluate_brute_force(fp, s), expected, 1e-5 * expected);
   }
 }
 
