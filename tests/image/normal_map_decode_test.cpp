@@ -308,7 +308,8 @@ TEST(NormalMapDecode, BuffersThatNoFileGivesAreHandled) {
   }
   const Image inf{1, 1, 3, {INFINITY, 0, 1}};
   EXPECT_THROW(decode_normal_map(inf, floats, {}, "inf"), Error);
-  const LoadedNormalMap repaired = decode_normal_map(inf, floats, {.invalid = InvalidTexelPolicy::repair}, "inf");
+  const LoadedNormalMap repaired =
+      decode_normal_map(inf, floats, {.convention = std::nullopt, .invalid = InvalidTexelPolicy::repair}, "inf");
   EXPECT_EQ(repaired.map.texels[0], Vec3f(0, 0, 1));
   EXPECT_EQ(repaired.record.repaired_texels, 1u);
 }
