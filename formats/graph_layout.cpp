@@ -13,6 +13,18 @@ std::vector<uint64_t> GraphLayout::transfer_shape() const {
   return {exemplars, levels, side, side, candidates, channels};
 }
 
+namespace {
+
+// A top-level metadata member, or null when the file lacks it (the container requires only the common members, and
+// json's const operator[] must never be given a missing key).
+const nlohmann::json& metadata_member(const Asset& asset, const char* key) {
+  static const nlohmann::json kMissing;
+  const auto it = asset.metadata().find(key);
+  return it == asset.metadata().end() ? kMissing : *it;
+}
+
+}  // namespace
+
 std::string parse_graph_layout(const Asset& asset, GraphLayout& g) {
   const nlohmann::json& p = asset.metadata()["parameters"];
   if (!p.is_object()) return "parameters missing";
@@ -36,7 +48,7 @@ std::string parse_graph_layout(const Asset& asset, GraphLayout& g) {
   if (g.candidates < 1 || g.candidates > 16) return "candidates must be 1..16";
   if (g.synthesis_pca_components < 1 || g.synthesis_pca_components > 25 * g.channels)
     return "synthesis_pca_components must be 1..25 x channels";
-  const nlohmann::json& graph = asset.metadata()["graph"];
+  const nlohmann::json& graph = metadata_member(asset, "graph");
   if (!graph.is_object() || !graph.contains("ids") || !graph["ids"].is_array() || graph["ids"].size() != g.exemplars)
     return "graph.ids must list one id per exemplar";
   g.ids.clear();
@@ -47,7 +59,7 @@ std::string parse_graph_layout(const Asset& asset, GraphLayout& g) {
   if (!graph.contains("root") || !graph["root"].is_number_unsigned() || graph["root"].get<uint64_t>() >= g.exemplars)
     return "graph.root must be an exemplar index";
   g.root = graph["root"];
-  const nlohmann::json& super = asset.metadata()["superexemplar"];
+  const nlohmann::json& super = metadata_member(asset, "superexemplar");
   if (!super.is_object() || !super.contains("sets") || !super["sets"].is_array() || super["sets"].empty() ||
       super["sets"].size() > 100000 || !super.contains("repeat_from") || !super["repeat_from"].is_number_unsigned() ||
       super["repeat_from"].get<uint64_t>() >= super["sets"].size())

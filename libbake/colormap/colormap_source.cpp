@@ -65,10 +65,26 @@ LoadedColormap load_gradient_image(const std::filesystem::path& path, ColorEncod
 }
 
 LoadedColormap load_stops(const std::filesystem::path& path, ColorEncoding encoding) {
-  const std::string where = path.string();
   const std::vector<uint8_t> bytes = read_file_bytes(path);
-  const nlohmann::json doc =
-      parse_json_strict(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), where);
+  LoadedColormap out = parse_colormap_stops(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()),
+                                            path.string(), encoding);
+  out.record = file_record(path);
+  out.record["stops"] = out.curve.knots.size();
+  out.record["encoding"] = out.encoding;
+  return out;
+}
+
+}  // namespace
+
+ColorEncoding parse_color_encoding(const std::string& name) {
+  if (name == "auto") return ColorEncoding::automatic;
+  if (name == "srgb") return ColorEncoding::srgb;
+  if (name == "linear") return ColorEncoding::linear;
+  throw Error(ExitCode::bad_command_line, "unknown --encoding '" + name + "' (use auto, srgb or linear)");
+}
+
+LoadedColormap parse_colormap_stops(std::string_view text, const std::string& where, ColorEncoding encoding) {
+  const nlohmann::json doc = parse_json_strict(text, where);
   LoadedColormap out;
   try {
     JsonObjectReader root(doc, "");
@@ -107,19 +123,7 @@ LoadedColormap load_stops(const std::filesystem::path& path, ColorEncoding encod
   } catch (const Error& e) {
     throw Error(e.code(), e.what(), where + (e.where().empty() ? "" : ": " + e.where()));
   }
-  out.record = file_record(path);
-  out.record["stops"] = out.curve.knots.size();
-  out.record["encoding"] = out.encoding;
   return out;
-}
-
-}  // namespace
-
-ColorEncoding parse_color_encoding(const std::string& name) {
-  if (name == "auto") return ColorEncoding::automatic;
-  if (name == "srgb") return ColorEncoding::srgb;
-  if (name == "linear") return ColorEncoding::linear;
-  throw Error(ExitCode::bad_command_line, "unknown --encoding '" + name + "' (use auto, srgb or linear)");
 }
 
 LoadedColormap load_colormap_source(const std::filesystem::path& path, ColorEncoding encoding) {

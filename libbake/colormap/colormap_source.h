@@ -19,6 +19,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -42,5 +43,9 @@ struct LoadedColormap {
 // Throws Error: io_failure (missing file), invalid_input (not an image / malformed JSON, bad stops, non-finite
 // pixels), with the JSON path or pixel in `where`.
 LoadedColormap load_colormap_source(const std::filesystem::path& path, ColorEncoding encoding);
+
+// The JSON colour stops of `text` (the file's bytes; `where` names it in errors), as load_colormap_source reads a
+// .json file, without the file record. Same errors.
+LoadedColormap parse_colormap_stops(std::string_view text, const std::string& where, ColorEncoding encoding);
 
 }  // namespace mbk

@@ -69,6 +69,11 @@ TexelFault decode_texel(const float* v, const Decoding& d, bool repair, Vec3f& o
   return fault;
 }
 
+[[noreturn]] void refuse_one_channel(const std::string& where) {
+  throw Error(ExitCode::invalid_input,
+              "one-channel image: this looks like a height map, not a normal map (convert it to normals first)", where);
+}
+
 struct RowFaults {
   uint64_t count = 0;
   uint32_t first_x = 0;
@@ -179,16 +184,11 @@ nlohmann::json normal_map_conventions() {
           {"uv", "u right, v up; texel (x, row) centre at ((x + 0.5) / W, 1 - (row + 0.5) / H), row 0 at the top"}};
 }
 
-LoadedNormalMap load_normal_map(const std::filesystem::path& path, const NormalMapLoadOptions& options) {
-  const std::string where = path.string();
-  const ImageHeader header = read_image_header_within(path, kMaxNormalMapSide, "normal map");
-  if (header.info.file_channels == 1)
-    throw Error(ExitCode::invalid_input,
-                "one-channel image: this looks like a height map, not a normal map (convert it to normals first)",
-                where);
-
-  ImageFileInfo info;
-  const Image image = load_image(path, &info);
+LoadedNormalMap decode_normal_map(const Image& image, const ImageFileInfo& info, const NormalMapLoadOptions& options,
+                                  const std::string& where) {
+  if (image.channels < 2) refuse_one_channel(where);
+  if (image.pixels.size() != size_t(image.width) * image.height * image.channels)
+    throw Error(ExitCode::runtime_failure, "decoded pixel buffer does not match its size", where);
   Decoding d;
   d.unsigned_codes = !info.is_float && !info.is_signed;
   d.channels = std::min<uint32_t>(image.channels, 3);
@@ -225,8 +225,6 @@ LoadedNormalMap load_normal_map(const std::filesystem::path& path, const NormalM
 
   InputRecord& r = out.record;
   r.path = where;
-  r.content_hash = file_content_hash(path);
-  r.bytes = std::filesystem::file_size(path);
   r.width = map.width;
   r.height = map.height;
   r.channels = info.file_channels;
@@ -234,6 +232,19 @@ LoadedNormalMap load_normal_map(const std::filesystem::path& path, const NormalM
   resolve_convention(map, options.convention, r);
   r.invalid_policy = repair ? "repair" : "error";
   r.repaired_texels = invalid;
+  return out;
+}
+
+LoadedNormalMap load_normal_map(const std::filesystem::path& path, const NormalMapLoadOptions& options) {
+  const std::string where = path.string();
+  const ImageHeader header = read_image_header_within(path, kMaxNormalMapSide, "normal map");
+  if (header.info.file_channels == 1) refuse_one_channel(where);
+
+  ImageFileInfo info;
+  const Image image = load_image(path, &info);
+  LoadedNormalMap out = decode_normal_map(image, info, options, where);
+  out.record.content_hash = file_content_hash(path);
+  out.record.bytes = std::filesystem::file_size(path);
   return out;
 }
 

@@ -29,6 +29,7 @@
 #include <nlohmann/json.hpp>
 
 #include "libbake/core/eigen.h"
+#include "libbake/image/image_io.h"
 
 namespace mbk {
 
@@ -87,6 +88,13 @@ struct LoadedNormalMap {
 // texels under the error policy, too large). Raises one warning (libbake/core/warnings.h) when auto cannot decide
 // the convention (the map is read as +Y) or when a requested convention contradicts a confident statistic.
 LoadedNormalMap load_normal_map(const std::filesystem::path& path, const NormalMapLoadOptions& options);
+
+// The decoding step of load_normal_map, after the image library: `image` (pixels as load_image gives them, stored
+// as `info` says) becomes unit texels in +Y, with the same errors and warnings (`where` names the map). The record
+// gets everything but the file's content hash and byte count. Any size and any values (NaN/Inf included) are
+// refused cleanly or decoded; Error(runtime_failure) when the buffer's length is not width x height x channels.
+LoadedNormalMap decode_normal_map(const Image& image, const ImageFileInfo& info, const NormalMapLoadOptions& options,
+                                  const std::string& where);
 
 // The content hash recorded for inputs ("xxh3:<16 hex>"). Throws Error(io_failure).
 std::string file_content_hash(const std::filesystem::path& path);

@@ -219,8 +219,11 @@ Scene parse_scene(const nlohmann::json& json, const fs::path& folder) {
 
 Scene load_scene(const fs::path& file) {
   const std::vector<uint8_t> bytes = read_file_bytes(file);
-  const nlohmann::json json =
-      parse_json_strict(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), file.string());
+  return parse_scene_text(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), file);
+}
+
+Scene parse_scene_text(std::string_view text, const fs::path& file) {
+  const nlohmann::json json = parse_json_strict(text, file.string());
   fs::path folder = file.parent_path();
   if (folder.empty()) folder = ".";
   try {

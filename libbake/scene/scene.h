@@ -15,6 +15,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -102,6 +103,8 @@ struct Scene {
 // Reads and checks a scene file. Error: io_failure when it cannot be read, invalid_input for malformed
 // JSON or any problem in it, `where` = "<file>: <json path>".
 Scene load_scene(const std::filesystem::path& file);
+// The same from the file's bytes (`file` names it and its folder starts relative paths; nothing is read from disk).
+Scene parse_scene_text(std::string_view text, const std::filesystem::path& file);
 // The same from parsed JSON; relative paths resolve against `folder`; `where` = the JSON path.
 Scene parse_scene(const nlohmann::json& json, const std::filesystem::path& folder);
 

@@ -90,8 +90,11 @@ ExemplarGraph parse_exemplar_graph(const nlohmann::json& json, const std::string
 
 ExemplarGraph load_exemplar_graph(const std::filesystem::path& file) {
   const std::vector<uint8_t> bytes = read_file_bytes(file);
-  const nlohmann::json json =
-      parse_json_strict(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), file.string());
+  return parse_exemplar_graph_text(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), file);
+}
+
+ExemplarGraph parse_exemplar_graph_text(std::string_view text, const std::filesystem::path& file) {
+  const nlohmann::json json = parse_json_strict(text, file.string());
   std::filesystem::path folder = file.parent_path();
   if (folder.empty()) folder = ".";
   return parse_exemplar_graph(json, file.string(), folder);

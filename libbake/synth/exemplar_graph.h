@@ -23,6 +23,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -50,6 +51,8 @@ ExemplarGraph parse_exemplar_graph(const nlohmann::json& graph, const std::strin
                                    const std::filesystem::path& folder);
 // Reads and parses a graph file. Error(io_failure) when unreadable, invalid_input when malformed.
 ExemplarGraph load_exemplar_graph(const std::filesystem::path& file);
+// The same from the file's bytes (`file` names it and its folder starts relative paths; nothing is read from disk).
+ExemplarGraph parse_exemplar_graph_text(std::string_view text, const std::filesystem::path& file);
 
 // Checks r < L (r_max = L for exemplars of 2^L texels a side) for every edge; Error(invalid_input) naming the edge.
 void check_edge_scales(const ExemplarGraph& graph, uint32_t L, const std::string& file);

@@ -367,6 +367,13 @@ std::vector<CorruptCase> corrupt_cases() {
        [] { return test::graph_bytes([](test::GraphParts& p) { p.transfer[0] = 0.5f; }); }},  // (0, 0) -> E0_0
       {"GraphPcaBasisNotOrthonormal", 19006,
        [] { return test::graph_bytes([](test::GraphParts& p) { p.pca_basis[2 * 2 + 1] = 0.5f; }); }},
+      // Found by tests/fuzz/fuzz_asset.cpp (corpus/asset/crash-graph-without-superexemplar): the layout looked the
+      // graph-only metadata members up with json's const operator[], undefined for a missing key (an assertion in
+      // the fuzz build).
+      {"GraphSuperexemplarMissing", 19001,
+       [] { return test::graph_bytes([](test::GraphParts& p) { p.metadata.erase("superexemplar"); }); }},
+      {"GraphGraphMembersMissing", 19001,
+       [] { return test::graph_bytes([](test::GraphParts& p) { p.metadata.erase("graph"); }); }},
       {"CreaseZeroWidth", 16001,
        [] {
          return test::crease_bytes({}, {{"width", 0}, {"height", 2}});

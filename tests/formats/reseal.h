@@ -1,6 +1,6 @@
 // Resealing .mbk bytes after a change: recomputing the checksums around it, so that the checks behind the
 // checksums see the change. Shared by the corrupt fixtures (asset_fixtures.h), the mutation test and the fuzz
-// target (tests/fuzz/fuzz_reader.cpp); never trusts the header it reads more than the reader does.
+// target (tests/fuzz/fuzz_asset.cpp); never trusts the header it reads more than the reader does.
 #pragma once
 
 #include <cstdint>

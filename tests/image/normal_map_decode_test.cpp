@@ -271,6 +271,49 @@ TEST(NormalMapDecode, OneByOneMapLoads) {
   EXPECT_GT(m.map.texels[0].x(), 0.4f);
 }
 
+// decode_normal_map is what load_normal_map runs after the image library (and what tests/fuzz/fuzz_normal_map.cpp
+// fuzzes): the same buffer and stored type must give the same texels and record as the file.
+TEST(NormalMapDecode, DecodingABufferEqualsLoadingTheFile) {
+  test::ScratchDir dir;
+  save_image(dir / "n.png", code_image(), {.png_bits = 8});
+  const LoadedNormalMap file = load(dir / "n.png");
+  const ImageFileInfo info{
+      .pixel_format = "uint8", .is_float = false, .is_signed = false, .integer_bits = 8, .file_channels = 3};
+  const LoadedNormalMap buffer =
+      decode_normal_map(code_image(), info, {.convention = YConvention::plus_y}, (dir / "n.png").string());
+  ASSERT_EQ(buffer.map.texels.size(), file.map.texels.size());
+  for (size_t i = 0; i < file.map.texels.size(); ++i) EXPECT_EQ(buffer.map.texels[i], file.map.texels[i]) << i;
+  EXPECT_EQ(buffer.record.convention, file.record.convention);
+  EXPECT_EQ(buffer.record.convention_evidence, file.record.convention_evidence);
+  EXPECT_EQ(buffer.record.pixel_format, "uint8");
+}
+
+TEST(NormalMapDecode, BuffersThatNoFileGivesAreHandled) {
+  const ImageFileInfo floats{
+      .pixel_format = "float", .is_float = true, .is_signed = false, .integer_bits = 0, .file_channels = 3};
+  const LoadedNormalMap empty = decode_normal_map(Image{0, 0, 3, {}}, floats, {}, "empty");
+  EXPECT_TRUE(empty.map.texels.empty());
+  EXPECT_EQ(empty.record.convention, "+Y");  // undecidable: read as +Y
+  try {
+    decode_normal_map(Image{2, 1, 1, {0.5f, 0.5f}}, floats, {}, "grey");
+    FAIL() << "accepted one channel";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::invalid_input);
+  }
+  try {
+    decode_normal_map(Image{2, 2, 3, {0, 0, 1}}, floats, {}, "short");
+    FAIL() << "accepted a buffer shorter than its size";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::runtime_failure);
+  }
+  const Image inf{1, 1, 3, {INFINITY, 0, 1}};
+  EXPECT_THROW(decode_normal_map(inf, floats, {}, "inf"), Error);
+  const LoadedNormalMap repaired =
+      decode_normal_map(inf, floats, {.convention = std::nullopt, .invalid = InvalidTexelPolicy::repair}, "inf");
+  EXPECT_EQ(repaired.map.texels[0], Vec3f(0, 0, 1));
+  EXPECT_EQ(repaired.record.repaired_texels, 1u);
+}
+
 TEST(NormalMapDecode, ParseConventionAcceptsDocumentedNames) {
   EXPECT_EQ(parse_convention("+Y"), YConvention::plus_y);
   EXPECT_EQ(parse_convention("opengl"), YConvention::plus_y);
