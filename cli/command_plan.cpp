@@ -41,8 +41,7 @@ class PlanCommand : public Command {
     app.add_option("--out-dir", options_.out_dir,
                    "Asset folder of every scene (default: each scene's <scene folder>/<scene stem>.assets)")
         ->type_name("DIR");
-    app.add_option("--microbake", options_.program,
-                   "The program the commands run (default: microbake, found on PATH)")
+    app.add_option("--microbake", options_.program, "The program the commands run (default: microbake, found on PATH)")
         ->type_name("PROGRAM");
   }
 

@@ -30,8 +30,8 @@ std::string make_path(const std::filesystem::path& p) {
   std::string out;
   for (char c : p.string()) {
     if (std::string_view(":%*?[\t\n\\").find(c) != std::string_view::npos)
-      throw Error(ExitCode::bad_command_line,
-                  "a Makefile cannot name this path (use --format ninja or commands)", p.string());
+      throw Error(ExitCode::bad_command_line, "a Makefile cannot name this path (use --format ninja or commands)",
+                  p.string());
     if (c == ' ' || c == '#') out += '\\';
     out += c == '$' ? std::string("$$") : std::string(1, c);
   }
@@ -63,8 +63,8 @@ std::string ninja_file(const std::vector<PlannedBake>& bakes, const PlanRegenera
   for (const PlannedBake& b : bakes) {
     s += "build " + ninja_path(b.output) + ": bake";
     for (const auto& in : b.inputs) s += " " + ninja_path(in);
-    s += "\n  command = " + ninja_value(shell_command_line(b.command)) + "\n  description = " +
-         ninja_value(b.description) + "\n";
+    s += "\n  command = " + ninja_value(shell_command_line(b.command)) +
+         "\n  description = " + ninja_value(b.description) + "\n";
   }
   return s;
 }

@@ -24,7 +24,7 @@ struct PlannedBake {
 };
 
 struct PlanRegeneration {
-  std::vector<std::string> command;  // argv of the `microbake plan` that wrote the file
+  std::vector<std::string> command;           // argv of the `microbake plan` that wrote the file
   std::vector<std::filesystem::path> inputs;  // the scenes and every input file
 };
 

@@ -44,13 +44,14 @@ std::vector<std::string> asset_command(const AssetRecipe& recipe, const std::fil
   for (const BakeInput& in : recipe.inputs) {
     if (!in.option.empty()) add_option(words, in.option, in.path.string());
     if (!in.normal_map) continue;
-    if (in.normal_map->convention) add_option(words, "--convention", convention_request_name(in.normal_map->convention));
+    if (in.normal_map->convention)
+      add_option(words, "--convention", convention_request_name(in.normal_map->convention));
     if (in.normal_map->repair) words.push_back("--repair-invalid");
   }
   for (const Parameter& p : technique_schema(recipe.kind).parameters) {
     if (p.option.empty()) continue;
-    const nlohmann::json value = recipe.technique_values.contains(p.name) ? recipe.technique_values.at(p.name)
-                                                                           : p.default_value;
+    const nlohmann::json value =
+        recipe.technique_values.contains(p.name) ? recipe.technique_values.at(p.name) : p.default_value;
     if (value.is_null())
       throw std::logic_error("no value for " + recipe.kind + " parameter '" + p.name + "' (an effect's recipe)");
     add_option(words, p.option, exact_value_text(p, value));
@@ -63,8 +64,8 @@ std::vector<std::string> asset_command(const AssetRecipe& recipe, const std::fil
 std::string shell_quoted(const std::string& word) {
   bool plain = !word.empty();
   for (char c : word)
-    plain = plain && (std::isalnum(static_cast<unsigned char>(c)) || std::string_view("-_./=+:,@%").find(c) !=
-                                                                          std::string_view::npos);
+    plain = plain && (std::isalnum(static_cast<unsigned char>(c)) ||
+                      std::string_view("-_./=+:,@%").find(c) != std::string_view::npos);
   if (plain) return word;
   std::string quoted = "'";
   for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
