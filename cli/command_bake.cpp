@@ -35,6 +35,7 @@ constexpr const char* kReportSchema = "microbake-bake-report/1";
 struct AssetOutcome {
   std::string status;  // baked | skipped | failed | pending (--dry-run: would be baked); queued while baking
   std::string reason;
+  bool replaces_a_file = false;  // a stale file was there (text: "rebuilt")
   double seconds = 0;
   std::optional<Error> error;
 };
@@ -123,6 +124,7 @@ class BakeCommand : public Command {
         outcomes[i].status = "skipped";
       } else {
         outcomes[i].status = options_.dry_run ? "pending" : "queued";
+        outcomes[i].replaces_a_file = fresh.state == AssetState::stale;
         to_bake.push_back(i);
       }
     }
@@ -167,8 +169,10 @@ class BakeCommand : public Command {
                                   {"inputs", inputs},
                                   {"uses", uses}});
       if (text())
-        std::cout << (o.status == "pending" ? "would bake" : o.status) << " "
-                  << (a.file.empty() ? a.planned.recipe.kind + " asset" : a.file.filename().string()) << " ("
+        std::cout << (o.status == "pending"                      ? "would bake"
+                      : o.status == "baked" && o.replaces_a_file ? "rebuilt"
+                                                                 : o.status)
+                  << " " << (a.file.empty() ? a.planned.recipe.kind + " asset" : a.file.filename().string()) << " ("
                   << a.planned.recipe.kind << ", used by " << uses_text(a, several) << "): " << o.reason << "\n";
     }
     for (const fs::path& p : pruned) {
