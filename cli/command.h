@@ -44,6 +44,7 @@ std::unique_ptr<Command> make_crease_command();
 std::unique_ptr<Command> make_graph_command();
 std::unique_ptr<Command> make_synth_command();
 std::unique_ptr<Command> make_bake_command();
+std::unique_ptr<Command> make_plan_command();
 std::unique_ptr<Command> make_render_command();
 std::unique_ptr<Command> make_compare_command();
 

@@ -11,6 +11,7 @@
 #include "formats/asset.h"
 #include "formats/error.h"
 #include "libbake/core/progress.h"
+#include "libbake/eval/mip_effect.h"
 #include "libbake/eval/uv_footprint.h"
 #include "libbake/glint/glint_surface.h"
 #include "libbake/glint/glint_surface_mapping.h"
@@ -91,12 +92,12 @@ ShaderPtr glints_effect_shader(const EffectShaderRequest& request) {
   if (!request.material.normal_map)
     throw Error(ExitCode::invalid_input, "the glints effect needs the material's normal map", where);
   const NormalMapRef& ref = *request.material.normal_map;
-  const auto example = request.cache.get<LoadedNormalMap>(
-      "glint example|" + ref.path.string(), [&] { return load_normal_map(ref.path, ref.load_options()); });
   const GlintSettings settings = settings_of(request.use, where);
-  const uint32_t W = example->map.width, H = example->map.height;
 
   if (request.mode == EvalMode::reference) {
+    const auto example = request.cache.get<LoadedNormalMap>(
+        "glint example|" + ref.path.string(), [&] { return load_normal_map(ref.path, ref.load_options()); });
+    const uint32_t W = example->map.width, H = example->map.height;
     // No assets: the exact example, standardized here when the blend needs it, by the baker's own function at the
     // material's lut_size: the very knots the effect's asset holds (test: GlintsEffect.ReferenceUsesTheAssetsKnots),
     // so effect and reference render one microstructure.
@@ -118,14 +119,18 @@ ShaderPtr glints_effect_shader(const EffectShaderRequest& request) {
     });
   }
 
+  // The example is level 0 of the map's baked `mip` asset (the decoded map itself, as f32), so no source is read.
   struct Filtered {
-    std::shared_ptr<const LoadedNormalMap> example;
+    std::shared_ptr<const NormalPyramid> example;
     std::unique_ptr<GlintSurface> surface;
   };
   auto f = std::make_shared<Filtered>();
-  f->example = example;
+  const std::filesystem::path& mip = request.assets.at(2);
+  f->example = request.cache.get<NormalPyramid>("mip asset|" + mip.string(), [&] { return load_mip_asset(mip); });
+  const NormalMap& example = f->example->levels.at(0);
+  const uint32_t W = example.width, H = example.height;
   f->surface =
-      GlintSurface::open(example->map, Asset::open(request.assets.at(0)), Asset::open(request.assets.at(1)), settings);
+      GlintSurface::open(example, Asset::open(request.assets.at(0)), Asset::open(request.assets.at(1)), settings);
   return std::make_shared<GlintShader>([f, W, H](const ShadingContext& c) {
     // The pixel's anisotropic footprint as probes along its major axis (glint_surface_mapping.h), equally weighted.
     const FootprintProbes probes = footprint_probes(c.uv, c.footprint, W, H);

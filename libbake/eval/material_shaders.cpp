@@ -3,6 +3,7 @@
 
 #include "formats/error.h"
 #include "libbake/eval/material_normals.h"
+#include "libbake/eval/mip_effect.h"
 #include "libbake/scene/asset_freshness.h"
 #include "libbake/scene/bake_plan.h"
 
@@ -11,9 +12,15 @@ namespace {
 
 std::string scene_name(const Scene& scene) { return scene.file.empty() ? "SCENE.json" : scene.file.string(); }
 
-ShaderPtr baseline_shader(const Material& m, EvalMode mode, LoadCache& cache) {
+// `baked_mip`: the material's baseline `mip` asset (filtered mode, when planned): the pyramid comes from it and the
+// map is not read.
+ShaderPtr baseline_shader(const Material& m, EvalMode mode, const std::filesystem::path& baked_mip, LoadCache& cache) {
   MaterialNormals normals;
-  if (m.normal_map) {
+  if (!baked_mip.empty()) {
+    normals.filter = NormalFilter::trilinear;
+    normals.pyramid =
+        cache.get<NormalPyramid>("mip asset|" + baked_mip.string(), [&] { return load_mip_asset(baked_mip); });
+  } else if (m.normal_map) {
     const NormalMapRef& ref = *m.normal_map;
     const std::string map_key =
         ref.path.string() + "|" + convention_request_name(ref.convention) + (ref.repair ? "|repair" : "|error");
@@ -27,6 +34,13 @@ ShaderPtr baseline_shader(const Material& m, EvalMode mode, LoadCache& cache) {
     } else {
       normals.filter = NormalFilter::trilinear;
       normals.pyramid = cache.get<NormalPyramid>("map pyramid|" + map_key, [&] {
+        std::error_code ec;
+        if (!std::filesystem::exists(ref.path, ec))
+          throw Error(ExitCode::io_failure,
+                      "normal map of material '" + m.name +
+                          "' not found: a material without effects shades from its map directly (name an effect, "
+                          "e.g. \"mip\", to ship the map baked)",
+                      ref.path.string());
         return build_normal_pyramid(load_normal_map(ref.path, ref.load_options()).map);
       });
     }
@@ -35,7 +49,8 @@ ShaderPtr baseline_shader(const Material& m, EvalMode mode, LoadCache& cache) {
       [normals](const Vec2& uv, const UvFootprint& f) { return normals.lookup(uv, f); });
 }
 
-// The files of a material's effect assets, after checking that each exists and matches its inputs.
+// The files of a material's effect assets (effect kBaselineUse: its baseline), after checking that each exists and
+// matches its inputs. Without an input (assets shipped alone) the file is found by its recorded metadata.
 std::vector<std::filesystem::path> effect_asset_files(const Scene& scene, const std::vector<PlannedAsset>& plan,
                                                       const Material& m, const std::string& effect,
                                                       const std::filesystem::path& folder) {
@@ -43,9 +58,21 @@ std::vector<std::filesystem::path> effect_asset_files(const Scene& scene, const 
                            (folder == default_asset_folder(scene) ? "" : " --out-dir " + folder.string());
   std::vector<std::filesystem::path> files;
   for (const PlannedAsset* planned : assets_for(plan, m.name, effect)) {
-    const std::filesystem::path file = folder / planned->file_name;
-    const std::string context =
-        planned->recipe.kind + " asset of effect '" + effect + "' for material '" + m.name + "'";
+    const std::string context = planned->recipe.kind + " asset of " +
+                                (effect == kBaselineUse ? "the baseline" : "effect '" + effect + "'") +
+                                " for material '" + m.name + "'";
+    const std::filesystem::path file = find_baked_asset(*planned, folder);
+    if (file.empty()) {
+      std::string missing;
+      for (const BakeInput& in : planned->recipe.inputs) {
+        std::error_code ec;
+        if (!std::filesystem::exists(in.path, ec)) missing += (missing.empty() ? "" : ", ") + in.path.string();
+      }
+      throw Error(ExitCode::io_failure,
+                  context + " is missing, and its source (" + missing +
+                      ") is not here to name it: bake where the sources are, and ship the asset folder",
+                  folder.string());
+    }
     const AssetFreshness f = check_asset_freshness(*planned, file);
     if (f.state == AssetState::missing)
       throw Error(ExitCode::io_failure, context + " is missing: " + bake, file.string());
@@ -64,7 +91,11 @@ std::map<std::string, ShaderPtr> load_material_shaders(const Scene& scene, EvalM
   LoadCache cache;
   std::map<std::string, ShaderPtr> out;
   for (const auto& [name, m] : scene.materials) {
-    ShaderPtr shader = baseline_shader(m, mode, cache);
+    std::filesystem::path baked_mip;
+    if (mode == EvalMode::filtered)
+      if (const auto files = effect_asset_files(scene, plan, m, kBaselineUse, asset_folder); !files.empty())
+        baked_mip = files.front();
+    ShaderPtr shader = baseline_shader(m, mode, baked_mip, cache);
     for (const EffectUse& use : m.effects) {
       const EffectShaderFactory* make = find_effect_shader(use.name);
       if (!make)

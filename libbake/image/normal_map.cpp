@@ -219,7 +219,7 @@ LoadedNormalMap decode_normal_map(const Image& image, const ImageFileInfo& info,
                 std::to_string(invalid) + " invalid texel" + (invalid == 1 ? "" : "s") +
                     " (NaN/Inf, zero length or z < 0); the first is at (x, row) = (" +
                     std::to_string(faults[row].first_x) + ", " + std::to_string(row) +
-                    "): " + fault_name(faults[row].first) + "; repair them with --repair-invalid",
+                    "): " + fault_name(faults[row].first) + "; repair them with " + options.repair_hint,
                 where);
   }
 

@@ -59,6 +59,8 @@ struct NormalMap {
 struct NormalMapLoadOptions {
   ConventionRequest convention;  // auto
   InvalidTexelPolicy invalid = InvalidTexelPolicy::error;
+  // How the user asks for repair, named in the error about invalid texels (a scene: its "repair" key).
+  std::string repair_hint = "--repair-invalid";
 };
 
 // What an asset records about each input (metadata "inputs"): enough to detect that it changed.

@@ -1,6 +1,8 @@
 // Up-to-date checks of baked assets against the current inputs (see asset_freshness.h).
 #include "libbake/scene/asset_freshness.h"
 
+#include <algorithm>
+
 #include "formats/asset.h"
 #include "formats/version.h"
 #include "formats/error.h"
@@ -68,6 +70,28 @@ AssetFreshness check_asset_freshness(const PlannedAsset& planned, const std::fil
   }
   return {AssetState::up_to_date,
           "up to date (input " + (hashes.empty() ? "not present" : hashes) + ", same parameters)"};
+}
+
+std::filesystem::path find_baked_asset(const PlannedAsset& planned, const std::filesystem::path& folder) {
+  if (!planned.file_name.empty()) return folder / planned.file_name;
+  const std::string prefix = asset_name_prefix(planned.recipe);
+  std::vector<std::filesystem::path> matches;
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.rfind(prefix, 0) == 0 && name.size() == prefix.size() + 16 + 4 &&
+        check_asset_freshness(planned, it->path()).state == AssetState::up_to_date)
+      matches.push_back(it->path());
+  }
+  if (matches.size() > 1) {
+    std::sort(matches.begin(), matches.end());
+    throw Error(ExitCode::invalid_input,
+                std::to_string(matches.size()) + " baked " + planned.recipe.kind +
+                    " assets match and the inputs to tell "
+                    "them apart are missing: remove the old ones ('microbake bake --prune' where the inputs are)",
+                matches[0].string() + ", " + matches[1].string());
+  }
+  return matches.empty() ? std::filesystem::path() : matches[0];
 }
 
 }  // namespace mbk

@@ -23,4 +23,11 @@ struct AssetFreshness {
 
 AssetFreshness check_asset_freshness(const PlannedAsset& planned, const std::filesystem::path& file);
 
+// The file of a planned asset inside `folder`. With every input present, folder / file_name. With an input
+// missing (assets shipped without their sources), the one file `<stem>.<kind>.<hash>.mbk` in the folder that is up
+// to date with what can still be compared (its kind, version, parameters, conventions, repair policy and the hashes
+// of the inputs still present); "" when none is. Error(invalid_input) when several are (an older bake of another
+// map version not pruned: `bake --prune` removes it).
+std::filesystem::path find_baked_asset(const PlannedAsset& planned, const std::filesystem::path& folder);
+
 }  // namespace mbk

@@ -120,14 +120,18 @@ std::vector<AssetRecipe> colormap_assets(const EffectUse& use) {
   table.sigma_max = use.options["sigma_max"];
   nlohmann::json parameters = {{"width", table.width}, {"height", table.height}};
   if (table.sigma_max > 0) parameters["sigma_max"] = table.sigma_max;
-  std::vector<AssetRecipe> recipes{{"colormap", parameters, {{map, std::nullopt}}, [map, table](Progress& progress) {
+  std::vector<AssetRecipe> recipes{{"colormap",
+                                    parameters,
+                                    {{map, std::nullopt}},
+                                    [map, table](Progress& progress) {
                                       const LoadedColormap source = load_colormap_source(map, ColorEncoding::automatic);
                                       ColormapTableOptions options = table;
                                       options.mean_min = source.domain_min;
                                       options.mean_max = source.domain_max;
                                       return colormap_asset_writer(bake_colormap_table(source.curve, options, progress),
                                                                    source.record, source.encoding);
-                                    }}};
+                                    },
+                                    use.options}};
   if (use.files.count("driver")) {
     const std::filesystem::path driver = use.files.at("driver");
     recipes.push_back({"moments", nlohmann::json::object(), {{driver, std::nullopt}}, [driver](Progress&) {

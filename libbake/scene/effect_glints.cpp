@@ -1,6 +1,7 @@
 // The `glints` effect ([Wang20]; libbake/glint/glint_technique.h): specular glints from the infinite,
-// non-repeating microstructure blended from the material's normal map (the example). Bakes ONLY the example's
-// standardization LUTs (asset kind `lut`) and its RMQ table (asset kind `rmq`); its evaluator side is
+// non-repeating microstructure blended from the material's normal map (the example). Bakes the example's
+// standardization LUTs (asset kind `lut`), its RMQ table (asset kind `rmq`) and the map's `mip` asset, whose level 0
+// is the example the evaluator blends (so rendering reads no source map); its evaluator side is
 // libbake/eval/glints_effect.h. Keys (all optional; README "Effect glints"):
 //   blending  "histogram"  none | linear | variance | histogram ([Wang20] Eqs. 4-6; none: one patch, for flakes)
 //   sigma_r   0.01         intrinsic roughness, in normal units
@@ -65,10 +66,16 @@ EffectInfo glints_effect() {
          [map, lut_size](Progress& progress) {
            const LoadedNormalMap loaded = load_normal_map(map.path, map.normal_map->load_options());
            return lut_asset_writer(bake_standardization_lut(loaded.map, lut_size, progress), loaded.record);
-         }},
-        {"rmq", {{"patch", patch}, {"bits", bits}}, {map}, [map, patch, bits](Progress& progress) {
+         },
+         {{"size", lut_size}}},
+        {"rmq",
+         {{"patch", patch}, {"bits", bits}},
+         {map},
+         [map, patch, bits](Progress& progress) {
            return bake_rmq_asset(load_normal_map(map.path, map.normal_map->load_options()), patch, bits, progress);
-         }}};
+         },
+         {{"patch", patch}, {"bits", bits}}},
+        mip_asset_recipe(m)};
   };
   return e;
 }

@@ -34,6 +34,7 @@ namespace mbk {
 struct BakeInput {
   std::filesystem::path path;              // resolved
   std::optional<NormalMapRef> normal_map;  // set when read as a normal map: convention and policy matter too
+  std::string option;                      // how `microbake <kind>` takes it: "" the positional INPUT, or "--curves"
 };
 
 struct AssetRecipe {
@@ -41,6 +42,9 @@ struct AssetRecipe {
   nlohmann::json parameters;                   // canonical bake parameters (an object; {} without knobs)
   std::vector<BakeInput> inputs;               // recorded in the asset's "inputs", in this order
   std::function<AssetWriter(Progress&)> bake;  // reads `inputs` and bakes; throws Error
+  // The values of the technique's parameters (technique_schema(kind)) that make `microbake <kind>` bake the same
+  // bytes; a parameter absent here takes its default (cli/asset_command.h turns them into options).
+  nlohmann::json technique_values = nlohmann::json::object();
 };
 
 struct EffectInfo {

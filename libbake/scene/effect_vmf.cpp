@@ -24,10 +24,14 @@ EffectInfo vmf_effect() {
                                        {"max_iterations", bake.em.max_iterations},
                                        {"feature_channels", 0}};
     return std::vector<AssetRecipe>{
-        {"vmf", parameters, {map}, [map, bake](Progress& progress) {
+        {"vmf",
+         parameters,
+         {map},
+         [map, bake](Progress& progress) {
            const LoadedNormalMap input = load_normal_map(map.path, map.normal_map->load_options());
            return vmf_asset_writer(input, nullptr, build_vmf_pyramid(input.map, nullptr, bake, progress), bake);
-         }}};
+         },
+         use.options}};
   };
   return e;
 }

@@ -177,6 +177,7 @@ NormalMapLoadOptions NormalMapRef::load_options() const {
   NormalMapLoadOptions o;
   o.convention = convention;
   o.invalid = repair ? InvalidTexelPolicy::repair : InvalidTexelPolicy::error;
+  o.repair_hint = "\"repair\": true in the material's normal_map";
   return o;
 }
 

@@ -3,12 +3,15 @@
 // and checks that the destination is the old file intact or the complete new one, byte for byte. A killed command
 // cannot clean up, so its temporary may stay until the next command writing the same output starts: each trial
 // checks that at most the last killed run's temporary is present, and after a final complete run none is. Two
-// commands racing to write one output leave one complete file, whichever finished last.
+// commands racing to write one output leave one complete file, whichever finished last; two bakes racing on one
+// shared asset folder leave the files one bake writes.
 #include <gtest/gtest.h>
 
 #include <signal.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "tests/corpus/run_microbake.h"
 #include "tests/scratch_dir.h"
@@ -125,6 +128,35 @@ TEST_F(KillTest, RacingWritersLeaveOneCompleteFile) {
     const std::string now = test::slurp(dir_.path() / "race.mbk");
     EXPECT_TRUE(now == a_bytes || now == b_bytes) << "round " << round << ": " << now.size() << " bytes";
     EXPECT_EQ(temporaries_of(dir_.path(), "race.mbk"), 0u) << "round " << round;
+  }
+}
+
+// The shared-folder case of a cluster (README "Baking a large library"): two `bake`s of one scene into one asset
+// folder at once both succeed, and leave exactly the files a bake alone writes, byte for byte, with no temporary.
+TEST_F(KillTest, RacingBakesOfOneSceneLeaveTheFilesOneBakeWrites) {
+  std::ofstream(dir_.path() / "race.json")
+      << R"({"camera": {"position": [0, 1.5, 3], "look_at": [0, 0, 0], "fov_y": 45, "width": 8, "height": 6},
+            "shapes": [{"type": "plane", "size": [2, 2], "material": "m"}],
+            "lights": [{"type": "point", "position": [1, 2, 1], "intensity": 4}],
+            "materials": {"m": {"normal_map": {"path": "a.png", "convention": "+Y"},
+                                "effects": [{"name": "sh", "order": 4}, "toksvig"]}}})";
+  const test::Run solo = test::run_microbake({"bake", "race.json", "--out-dir", "solo", "-q"}, dir_.path());
+  ASSERT_EQ(solo.exit_code, 0) << solo.err;
+  for (int round = 0; round < 3; ++round) {
+    const std::string folder = "shared" + std::to_string(round);
+    const pid_t first = test::spawn_microbake({"bake", "race.json", "--out-dir", folder, "-q"}, dir_.path());
+    const pid_t second = test::spawn_microbake({"bake", "race.json", "--out-dir", folder, "-q"}, dir_.path());
+    EXPECT_EQ(test::wait_for(first).exit_code, 0) << "round " << round;
+    EXPECT_EQ(test::wait_for(second).exit_code, 0) << "round " << round;
+    size_t files = 0;
+    for (const auto& e : fs::directory_iterator(dir_.path() / "solo")) {
+      ++files;
+      EXPECT_EQ(test::slurp(dir_.path() / folder / e.path().filename()), test::slurp(e.path()))
+          << "round " << round << ": " << e.path().filename();
+    }
+    EXPECT_EQ(files, 2u);  // sh, and the mip of toksvig and the baseline
+    EXPECT_EQ(size_t(std::distance(fs::directory_iterator(dir_.path() / folder), fs::directory_iterator())), files)
+        << "round " << round << ": a temporary or another file was left";
   }
 }
 

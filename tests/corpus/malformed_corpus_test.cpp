@@ -228,7 +228,7 @@ void add_render_cases(std::vector<CorpusCase>& cases) {
         cases.push_back({"render_" + scene + "_" + kind + "_" + name,
                          {"render", scene + ".json", "--assets", case_folder, "-q", "-o", out},
                          3,
-                         kind + " asset of effect",
+                         kind + " asset of ",  // "of effect 'x'" or "of the baseline"
                          out});
       }
     }

@@ -81,7 +81,8 @@ TEST(CreaseEffect, BakesOneCreaseAssetWithCanonicalOptions) {
                       magnified_scene({{"name", "crease"}, {"curves", "line.json"}, {"profile", {{"kind", "v"}}}}));
   const Scene scene = load_scene(dir / "s.json");
   const std::vector<PlannedAsset> plan = plan_assets(scene);
-  ASSERT_EQ(plan.size(), 1u);
+  ASSERT_EQ(plan.size(), 2u);  // and the baseline's mip
+  EXPECT_EQ(plan[1].recipe.kind, "mip");
   EXPECT_EQ(plan[0].recipe.kind, "crease");
   EXPECT_EQ(plan[0].recipe.parameters, (json{{"smooth_iterations", 10}, {"band", 4.0}}));
   ASSERT_EQ(plan[0].recipe.inputs.size(), 2u);

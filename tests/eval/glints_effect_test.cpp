@@ -61,14 +61,15 @@ double mean(const Image& im) {
   return s / double(im.pixels.size());
 }
 
-TEST(GlintsEffect, BakesOnlyLutAndRmqWithCanonicalOptions) {
+// The mip asset is the example the filtered glints read (its level 0), and the material's baseline.
+TEST(GlintsEffect, BakesLutRmqAndMipWithCanonicalOptions) {
   ScratchDir dir("glints_plan");
   testing::write_bumpy_map(dir / "bumps.exr", 64, 64);
   testing::write_json(dir / "s.json", scene_with({{"name", "glints"}, {"patch", 32}, {"bits", 8}}, "bumps.exr"));
   const Scene scene = load_scene(dir / "s.json");
   std::vector<std::string> kinds;
   for (const PlannedAsset& a : plan_assets(scene)) kinds.push_back(a.recipe.kind);
-  EXPECT_EQ(kinds, (std::vector<std::string>{"lut", "rmq"}));
+  EXPECT_EQ(kinds, (std::vector<std::string>{"lut", "rmq", "mip"}));
   const json& options = scene.materials.at("a").effects.at(0).options;
   EXPECT_EQ(
       options,

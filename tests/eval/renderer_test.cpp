@@ -129,13 +129,27 @@ TEST(Renderer, StaleAssetIsRefused) {
   const Scene scene = load_scene(dir / "s.json");
   bake_scene(scene);
   EXPECT_NO_THROW(load_render_inputs(scene, RenderSettings{}));
+  const std::string old_name = plan_assets(scene).at(0).file_name;
   testing::write_bumpy_map(dir / "bumps.exr", 24, 22);
+  // A changed map names another asset (content-addressed), which is not baked yet.
+  const Scene changed = load_scene(dir / "s.json");
+  const std::string new_name = plan_assets(changed).at(0).file_name;
+  ASSERT_NE(new_name, old_name);
   try {
-    load_render_inputs(scene, RenderSettings{});
+    load_render_inputs(changed, RenderSettings{});
+    ADD_FAILURE() << "rendered without the new asset";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::io_failure);
+    EXPECT_NE(std::string(e.what()).find("is missing: run 'microbake bake"), std::string::npos) << e.what();
+  }
+  // A file under the new name that records the old map's hash is refused by its recorded hash.
+  std::filesystem::copy_file(dir / "s.assets" / old_name, dir / "s.assets" / new_name);
+  try {
+    load_render_inputs(changed, RenderSettings{});
     ADD_FAILURE() << "rendered a stale asset";
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ExitCode::invalid_input);
-    EXPECT_NE(std::string(e.what()).find("out of date"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("out of date (input bumps.exr changed"), std::string::npos) << e.what();
   }
 }
 

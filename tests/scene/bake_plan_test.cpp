@@ -5,11 +5,14 @@
 #include <fstream>
 #include <regex>
 
+#include <xxhash.h>
+
 #include "formats/asset.h"
 #include "formats/atomic_file.h"
 #include "tests/formats/asset_fixtures.h"
 #include "formats/error.h"
 #include "libbake/scene/asset_freshness.h"
+#include "libbake/image/normal_map.h"
 #include "libbake/scene/bake_plan.h"
 #include "tests/scene/scene_test_fixtures.h"
 #include "tests/scratch_dir.h"
@@ -20,52 +23,76 @@ namespace {
 using nlohmann::json;
 using test::ScratchDir;
 
-json map_material(const std::string& path, const std::vector<std::string>& effects,
-                  const std::string& convention = "+Y") {
+json map_material(const std::string& path, const json& effects, const std::string& convention = "+Y") {
   return {{"normal_map", {{"path", path}, {"convention", convention}}}, {"effects", effects}};
 }
 
 TEST(BakePlan, TwoMaterialsSharingAMapBakeOneAsset) {
-  // "maps/../maps/a.png" names the same file as "maps/a.png".
-  const json materials = {{"a", map_material("maps/a.png", {"mip"})},
-                          {"b", map_material("maps/../maps/a.png", {"mip"})},
-                          {"c", map_material("maps/a.png", {})}};
+  // "maps/../maps/a.png" names the same file as "maps/a.png"; the baselines of a and b are that same mip asset.
+  const json materials = {{"a", map_material("maps/a.png", json::array({"mip"}))},
+                          {"b", map_material("maps/../maps/a.png", json::array({"mip"}))},
+                          {"c", map_material("maps/a.png", json::array())}};
   const Scene scene = parse_scene(testing::small_scene(materials), "/scenes");
   const auto plan = plan_assets(scene);
   ASSERT_EQ(plan.size(), 1u);
   EXPECT_EQ(plan[0].recipe.kind, "mip");
-  ASSERT_EQ(plan[0].uses.size(), 2u);
+  EXPECT_EQ(plan[0].file_name, "");  // the map is not there to hash
+  ASSERT_EQ(plan[0].uses.size(), 4u);
   EXPECT_EQ(plan[0].uses[0].material, "a");
   EXPECT_EQ(plan[0].uses[1].material, "b");
+  EXPECT_EQ(plan[0].uses[2].effect, kBaselineUse);
   EXPECT_EQ(assets_for(plan, "b", "mip"), std::vector<const PlannedAsset*>{&plan[0]});
+  EXPECT_EQ(assets_for(plan, "b", kBaselineUse), std::vector<const PlannedAsset*>{&plan[0]});
   EXPECT_TRUE(assets_for(plan, "c", "mip").empty());
+  EXPECT_TRUE(assets_for(plan, "c", kBaselineUse).empty());  // no effect: shaded from the map itself
 }
 
 TEST(BakePlan, DifferentConventionOrMapIsADifferentAsset) {
-  const json materials = {{"a", map_material("maps/a.png", {"mip"})},
-                          {"b", map_material("maps/a.png", {"mip"}, "-Y")},
-                          {"c", map_material("maps/c.png", {"mip"})}};
-  const auto plan = plan_assets(parse_scene(testing::small_scene(materials), "/scenes"));
+  ScratchDir dir("plan_different");
+  testing::write_bumpy_map(dir / "a.exr");
+  testing::write_bumpy_map(dir / "c.exr", 24, 21);
+  const json materials = {{"a", map_material("a.exr", json::array({"mip"}))},
+                          {"b", map_material("a.exr", json::array({"mip"}), "-Y")},
+                          {"c", map_material("c.exr", json::array({"mip"}))}};
+  const auto plan = plan_assets(parse_scene(testing::small_scene(materials), dir.path()));
   ASSERT_EQ(plan.size(), 3u);
   EXPECT_NE(plan[0].file_name, plan[1].file_name);
   EXPECT_NE(plan[0].file_name, plan[2].file_name);
 }
 
 TEST(BakePlan, PlainMaterialsPlanNothing) {
-  const json materials = {{"a", map_material("maps/a.png", {})}, {"b", json::object()}, {"c", json::object()}};
+  const json materials = {
+      {"a", map_material("maps/a.png", json::array())}, {"b", json::object()}, {"c", json::object()}};
   EXPECT_TRUE(plan_assets(parse_scene(testing::small_scene(materials), "/scenes")).empty());
 }
 
-TEST(BakePlan, FileNamesAreStableAndIndependentOfWhereTheSceneLives) {
-  const json materials = {
-      {"a", map_material("../maps/bricks.v2.png", {"mip"})}, {"b", json::object()}, {"c", json::object()}};
-  const auto here = plan_assets(parse_scene(testing::small_scene(materials), "/projects/one/scenes"));
-  const auto there = plan_assets(parse_scene(testing::small_scene(materials), "/elsewhere/scenes"));
-  ASSERT_EQ(here.size(), 1u);
-  EXPECT_EQ(here[0].file_name, there[0].file_name);
-  // <map stem, unsafe characters replaced>.<kind>.<8 hex>.mbk
-  EXPECT_TRUE(std::regex_match(here[0].file_name, std::regex(R"(bricks_v2\.mip\.[0-9a-f]{8}\.mbk)")))
-      << here[0].file_name;
+// The name is <stem>.<kind>.<XXH3-64 of the documented request text>.mbk, computed here from the text written out
+// by hand: the inputs' content hashes, how each is read, the kind and the parameters, and nothing else.
+TEST(BakePlan, FileNamesAreTheDocumentedContentAddress) {
+  ScratchDir dir("plan_names");
+  std::filesystem::create_directories(dir / "one/scenes");
+  std::filesystem::create_directories(dir / "two/deeper/maps");
+  testing::write_bumpy_map(dir / "one/bricks.v2.png.exr");
+  std::filesystem::copy_file(dir / "one/bricks.v2.png.exr", dir / "two/deeper/maps/bricks.v2.png.exr");
+  const json here_materials = {
+      {"a", map_material("../bricks.v2.png.exr", json::array({{{"name", "sh"}, {"order", 3}}}))},
+      {"b", json::object()},
+      {"c", json::object()}};
+  json there_materials = here_materials;
+  there_materials["a"]["normal_map"]["path"] = (dir / "two/deeper/maps/bricks.v2.png.exr").string();
+  const auto here = plan_assets(parse_scene(testing::small_scene(here_materials), dir / "one/scenes"));
+  const auto there = plan_assets(parse_scene(testing::small_scene(there_materials), "/elsewhere"));
+  ASSERT_EQ(here.size(), 2u);  // sh, and the baseline mip
+  for (size_t i = 0; i < 2; ++i) EXPECT_EQ(here[i].file_name, there[i].file_name);
+  const std::string hash = file_content_hash(dir / "one/bricks.v2.png.exr");
+  const std::string text = R"({"inputs":[{"content_hash":")" + hash +
+                           R"(","read_as":{"convention":"+Y","repair":false}}],"kind":"sh","parameters":)"
+                           R"({"order":3,"precision":"f16","window":"none"}})";
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(XXH3_64bits(text.data(), text.size())));
+  EXPECT_EQ(here[0].file_name, std::string("bricks_v2_png.sh.") + hex + ".mbk");
+  EXPECT_TRUE(std::regex_match(here[1].file_name, std::regex(R"(bricks_v2_png\.mip\.[0-9a-f]{16}\.mbk)")))
+      << here[1].file_name;
 }
 
 TEST(BakePlan, DefaultAssetFolderSitsBesideTheScene) {
@@ -80,7 +107,7 @@ class AssetFreshnessTest : public ::testing::Test {
   ScratchDir dir{"freshness"};
   PlannedAsset planned_for(const std::string& convention = "+Y") {
     const json materials = {
-        {"a", map_material("map.exr", {"mip"}, convention)}, {"b", json::object()}, {"c", json::object()}};
+        {"a", map_material("map.exr", json::array({"mip"}), convention)}, {"b", json::object()}, {"c", json::object()}};
     testing::write_json(dir / "s.json", testing::small_scene(materials));
     return plan_assets(load_scene(dir / "s.json")).at(0);
   }

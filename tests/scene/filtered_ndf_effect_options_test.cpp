@@ -60,7 +60,7 @@ TEST(FilteredNdfEffectOptions, ToksvigSharesTheMipAsset) {
   const std::vector<PlannedAsset> plan = plan_assets(s);
   ASSERT_EQ(plan.size(), 1u);
   EXPECT_EQ(plan[0].recipe.kind, "mip");
-  EXPECT_EQ(plan[0].uses.size(), 2u);
+  EXPECT_EQ(plan[0].uses.size(), 3u);  // mip, toksvig and the baseline
 }
 
 TEST(FilteredNdfEffectOptions, BadOptionsNameTheirPath) {

@@ -1,0 +1,81 @@
+// A planned asset as its `microbake <kind>` command (see asset_command.h).
+#include "libbake/scene/asset_command.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+
+#include "libbake/image/normal_map.h"
+#include "libbake/scene/technique_parameters.h"
+
+namespace mbk {
+namespace {
+
+// What the command line reads back as exactly this value (parameter_value_text rounds numbers for help): a number in
+// the fewest significant digits that give the same double ("0", "1e-06", "0.30000001192092896").
+std::string exact_value_text(const Parameter& p, const nlohmann::json& value) {
+  if (p.type != ParameterType::number) return parameter_value_text(p, value);
+  const double x = value.get<double>();
+  char text[40];
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, x);
+    if (std::strtod(text, nullptr) == x) break;
+  }
+  return text;
+}
+
+// "--opt value", or "--opt=value" when the value starts with '-' (so it is not read as an option).
+void add_option(std::vector<std::string>& words, const std::string& option, const std::string& value) {
+  if (!value.empty() && value[0] == '-') {
+    words.push_back(option + "=" + value);
+  } else {
+    words.push_back(option);
+    words.push_back(value);
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> asset_command(const AssetRecipe& recipe, const std::filesystem::path& output,
+                                       const std::string& program) {
+  std::vector<std::string> words = {program, recipe.kind};
+  for (const BakeInput& in : recipe.inputs)
+    if (in.option.empty()) words.push_back(in.path.string());
+  for (const BakeInput& in : recipe.inputs) {
+    if (!in.option.empty()) add_option(words, in.option, in.path.string());
+    if (!in.normal_map) continue;
+    if (in.normal_map->convention)
+      add_option(words, "--convention", convention_request_name(in.normal_map->convention));
+    if (in.normal_map->repair) words.push_back("--repair-invalid");
+  }
+  for (const Parameter& p : technique_schema(recipe.kind).parameters) {
+    if (p.option.empty()) continue;
+    const nlohmann::json value =
+        recipe.technique_values.contains(p.name) ? recipe.technique_values.at(p.name) : p.default_value;
+    if (value.is_null())
+      throw std::logic_error("no value for " + recipe.kind + " parameter '" + p.name + "' (an effect's recipe)");
+    add_option(words, p.option, exact_value_text(p, value));
+  }
+  words.push_back("-o");
+  words.push_back(output.string());
+  return words;
+}
+
+std::string shell_quoted(const std::string& word) {
+  bool plain = !word.empty();
+  for (char c : word)
+    plain = plain && (std::isalnum(static_cast<unsigned char>(c)) ||
+                      std::string_view("-_./=+:,@%").find(c) != std::string_view::npos);
+  if (plain) return word;
+  std::string quoted = "'";
+  for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+std::string shell_command_line(const std::vector<std::string>& words) {
+  std::string line;
+  for (const std::string& w : words) line += (line.empty() ? "" : " ") + shell_quoted(w);
+  return line;
+}
+
+}  // namespace mbk
