@@ -103,12 +103,7 @@ class BakeCommand : public Command {
   bool text() const { return options_.format == OutputFormat::text && !options_.run.quiet; }
 
   int bake_all(nlohmann::json& report) {
-    std::vector<BatchScene> scenes;
-    for (const std::string& name : options_.scenes) {
-      Scene scene = load_scene(name);
-      const fs::path folder = asset_folder_for(scene, options_.out_dir);
-      scenes.push_back({name, std::move(scene), folder});
-    }
+    const std::vector<BatchScene> scenes = load_batch_scenes(options_.scenes, options_.out_dir);
     const std::vector<BatchAsset> batch = plan_batch(scenes);
     std::vector<AssetOutcome> outcomes(batch.size());
     std::vector<size_t> to_bake;

@@ -53,12 +53,7 @@ class PlanCommand : public Command {
   }
 
   int run() override {
-    std::vector<BatchScene> scenes;
-    for (const std::string& name : options_.scenes) {
-      Scene scene = load_scene(name);
-      const fs::path folder = asset_folder_for(scene, options_.out_dir);
-      scenes.push_back({name, std::move(scene), folder});
-    }
+    const std::vector<BatchScene> scenes = load_batch_scenes(options_.scenes, options_.out_dir);
     const std::vector<BatchAsset> batch = plan_batch(scenes);
     std::vector<PlannedBake> bakes;
     PlanRegeneration regeneration{regeneration_command(), {}};

@@ -43,8 +43,14 @@ std::string use_text(const BatchUse& use) {
          (use.effect == kBaselineUse ? std::string("its baseline") : "effect '" + use.effect + "'");
 }
 
-std::filesystem::path asset_folder_for(const Scene& scene, const std::filesystem::path& out_dir) {
-  return out_dir.empty() ? default_asset_folder(scene) : out_dir;
+std::vector<BatchScene> load_batch_scenes(const std::vector<std::string>& names, const std::filesystem::path& out_dir) {
+  std::vector<BatchScene> scenes;
+  for (const std::string& name : names) {
+    Scene scene = load_scene(name);
+    std::filesystem::path folder = out_dir.empty() ? default_asset_folder(scene) : out_dir;
+    scenes.push_back({name, std::move(scene), std::move(folder)});
+  }
+  return scenes;
 }
 
 }  // namespace mbk

@@ -37,7 +37,8 @@ std::vector<BatchAsset> plan_batch(const std::vector<BatchScene>& scenes);
 // "scene.json: material 'a', effect 'glints'": where an asset is called for, for messages.
 std::string use_text(const BatchUse& use);
 
-// The scene's folder for assets: `out_dir` when not empty, else default_asset_folder.
-std::filesystem::path asset_folder_for(const Scene& scene, const std::filesystem::path& out_dir);
+// Loads the scenes named on a command line (load_scene), each with its asset folder: `out_dir` when not empty,
+// else the scene's default_asset_folder.
+std::vector<BatchScene> load_batch_scenes(const std::vector<std::string>& names, const std::filesystem::path& out_dir);
 
 }  // namespace mbk

@@ -277,10 +277,12 @@ TEST(NormalMapDecode, DecodingABufferEqualsLoadingTheFile) {
   test::ScratchDir dir;
   save_image(dir / "n.png", code_image(), {.png_bits = 8});
   const LoadedNormalMap file = load(dir / "n.png");
-  const ImageFileInfo info{
-      .pixel_format = "uint8", .is_float = false, .is_signed = false, .integer_bits = 8, .file_channels = 3};
+  // The buffer as the image library hands it over (its uint8 -> float conversion, not code / 255.0 in double).
+  ImageFileInfo info;
+  const Image decoded = load_image(dir / "n.png", &info);
+  EXPECT_EQ(info.pixel_format, "uint8");
   const LoadedNormalMap buffer =
-      decode_normal_map(code_image(), info, {.convention = YConvention::plus_y}, (dir / "n.png").string());
+      decode_normal_map(decoded, info, {.convention = YConvention::plus_y}, (dir / "n.png").string());
   ASSERT_EQ(buffer.map.texels.size(), file.map.texels.size());
   for (size_t i = 0; i < file.map.texels.size(); ++i) EXPECT_EQ(buffer.map.texels[i], file.map.texels[i]) << i;
   EXPECT_EQ(buffer.record.convention, file.record.convention);
