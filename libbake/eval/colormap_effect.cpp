@@ -181,6 +181,8 @@ class ColormapShader : public MaterialShader {
     return base_->radiance(c, coloured);
   }
 
+  bool uses_normal_steps() const override { return base_->uses_normal_steps(); }
+
   const std::vector<ColormapTerm>& terms() const { return terms_; }
   bool product() const { return weights_.product; }
   const ShaderPtr& base() const { return base_; }

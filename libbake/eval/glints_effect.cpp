@@ -52,7 +52,9 @@ Mat2 half_vector_steps(const ShadingContext& c, const Vec3& l, double distance) 
 
 class GlintShader : public MaterialShader {
  public:
-  explicit GlintShader(DistributionAt distribution) : at_(std::move(distribution)) {}
+  // `swept`: the distribution reads the half vector's sweep over the pixel (the filtered effect, not the reference).
+  GlintShader(DistributionAt distribution, bool swept) : at_(std::move(distribution)), swept_(swept) {}
+  bool uses_normal_steps() const override { return swept_; }
 
   Vec3 radiance(const ShadingContext& c, const Brdf& brdf) const override {
     const Vec3& n = c.frame.N;
@@ -74,6 +76,7 @@ class GlintShader : public MaterialShader {
 
  private:
   DistributionAt at_;
+  bool swept_;
 };
 
 GlintSettings settings_of(const EffectUse& use, const std::string& where) {
@@ -112,11 +115,13 @@ ShaderPtr glints_effect_shader(const EffectShaderRequest& request) {
       r->lut = bake_standardization_lut(example->map, request.use.options.at("lut_size"), Progress::silent()).tables;
     r->point = std::make_unique<GlintPointQuery>(example->map, settings.patch, settings.seed, settings.mode, &r->lut);
     const double sigma_r = settings.sigma_r;
-    return std::make_shared<GlintShader>([r, sigma_r, W, H](const ShadingContext& c) {
-      const Vec2 u = glint_target_point(c.uv, W, H);
-      return GlintDistribution(
-          [r, sigma_r, u](const Vec2& s, const Mat2&) { return point_ndf(*r->point, u, sigma_r, s); });
-    });
+    return std::make_shared<GlintShader>(
+        [r, sigma_r, W, H](const ShadingContext& c) {
+          const Vec2 u = glint_target_point(c.uv, W, H);
+          return GlintDistribution(
+              [r, sigma_r, u](const Vec2& s, const Mat2&) { return point_ndf(*r->point, u, sigma_r, s); });
+        },
+        false);
   }
 
   // The example is level 0 of the map's baked `mip` asset (the decoded map itself, as f32), so no source is read.
@@ -131,26 +136,28 @@ ShaderPtr glints_effect_shader(const EffectShaderRequest& request) {
   const uint32_t W = example.width, H = example.height;
   f->surface =
       GlintSurface::open(example, Asset::open(request.assets.at(0)), Asset::open(request.assets.at(1)), settings);
-  return std::make_shared<GlintShader>([f, W, H](const ShadingContext& c) {
-    // The pixel's anisotropic footprint as probes along its major axis (glint_surface_mapping.h), equally weighted.
-    const FootprintProbes probes = footprint_probes(c.uv, c.footprint, W, H);
-    std::vector<GlintFootprint> footprints;
-    footprints.reserve(size_t(probes.size()));
-    for (const FootprintProbe& p : probes) {
-      footprints.push_back(glint_probe_footprint(p.uv, p.width, W, H));
-      if (!std::isfinite(footprints.back().sigma))
-        return GlintDistribution([](const Vec2&, const Mat2&) { return 0.0; });  // grazing
-    }
-    return GlintDistribution([f, footprints = std::move(footprints)](const Vec2& s, const Mat2& steps) {
-      const SweptNormals swept = pixel_sweep(s, steps, f->surface->pndf().sigma_r());
-      double sum = 0.0;
-      for (GlintFootprint footprint : footprints) {
-        footprint.sweep = swept.residual;
-        sum += f->surface->pndf().evaluate_mean(footprint, swept.normals, nullptr, true);
-      }
-      return sum / double(footprints.size());
-    });
-  });
+  return std::make_shared<GlintShader>(
+      [f, W, H](const ShadingContext& c) {
+        // The pixel's anisotropic footprint as probes along its major axis (glint_surface_mapping.h), equally weighted.
+        const FootprintProbes probes = footprint_probes(c.uv, c.footprint, W, H);
+        std::vector<GlintFootprint> footprints;
+        footprints.reserve(size_t(probes.size()));
+        for (const FootprintProbe& p : probes) {
+          footprints.push_back(glint_probe_footprint(p.uv, p.width, W, H));
+          if (!std::isfinite(footprints.back().sigma))
+            return GlintDistribution([](const Vec2&, const Mat2&) { return 0.0; });  // grazing
+        }
+        return GlintDistribution([f, footprints = std::move(footprints)](const Vec2& s, const Mat2& steps) {
+          const SweptNormals swept = pixel_sweep(s, steps, f->surface->pndf().sigma_r());
+          double sum = 0.0;
+          for (GlintFootprint footprint : footprints) {
+            footprint.sweep = swept.residual;
+            sum += f->surface->pndf().evaluate_mean(footprint, swept.normals, nullptr, true);
+          }
+          return sum / double(footprints.size());
+        });
+      },
+      true);
 }
 
 }  // namespace mbk

@@ -30,6 +30,9 @@ class MaterialShader {
   // Linear RGB radiance towards the viewer. `brdf` is the material's BRDF; a shader that changes the
   // material's colour passes a modified copy to the shader it wraps.
   virtual Vec3 radiance(const ShadingContext& c, const Brdf& brdf) const = 0;
+  // Whether radiance() reads the footprint's normal steps (UvFootprint::dnormal_dx, dnormal_dy), which cost the
+  // renderer two extra intersections per pixel step: only then does it compute them.
+  virtual bool uses_normal_steps() const { return false; }
 };
 
 using ShaderPtr = std::shared_ptr<const MaterialShader>;

@@ -26,7 +26,7 @@ Vec3 radiance_along(const Scene& scene, const std::vector<ShapeShading>& shading
   if (!hit) return background(lighting, r.ray.direction);
   const ShapeShading& s = shading[hit->shape];
   const Vec3 to_viewer = -r.ray.direction;
-  UvFootprint footprint = uv_footprint(*hit, r, &scene.shapes[hit->shape]);
+  UvFootprint footprint = uv_footprint(*hit, r, s.shader->uses_normal_steps() ? &scene.shapes[hit->shape] : nullptr);
   footprint.max_probes = max_probes;
   const ShadingContext context{hit->p, hit->uv, footprint, surface_frame(*hit, to_viewer), to_viewer, &lighting};
   return s.shader->radiance(context, s.brdf);

@@ -42,7 +42,8 @@ struct UvFootprint {
   Vec3 dview_dx = Vec3::Zero(), dview_dy = Vec3::Zero();
   // The viewer-facing surface normal's change per pixel step on a curved surface: the normals where the rays
   // half a step either side meet the same shape, differenced (zero where either misses it, or when no shape was
-  // given). The glints effect turns it into the tangent frame's turn over the pixel.
+  // given: the renderer gives it only to shaders that use it). The glints effect turns it into the tangent frame's
+  // turn over the pixel.
   Vec3 dnormal_dx = Vec3::Zero(), dnormal_dy = Vec3::Zero();
   // The cap on anisotropic probes per lookup (`render --max-probes`; 1 = isotropic filtering).
   int max_probes = 16;
