@@ -2,12 +2,11 @@
 // [--no-correction]`: synthesizes a window of a multiscale texture from an analysed exemplar graph ([Han08] thesis
 // Sec. 5.2.2; libbake/synth/multiscale_synthesis.h). Deterministic: a window synthesized alone has the same pixels
 // as the same region of a larger window, whatever the thread count.
-#include <cctype>
-#include <cmath>
 #include <iomanip>
 #include <sstream>
 
 #include "cli/baking_command.h"
+#include "cli/synthesis_options.h"
 #include "formats/asset.h"
 #include "formats/error.h"
 #include "libbake/image/normal_map_encoding.h"
@@ -16,29 +15,6 @@
 namespace mbk::cli {
 namespace {
 
-// The comma-separated numbers of an option ("1,0.6,0.4"); Error(bad_command_line) naming the option and the part
-// that is empty, not a whole number (no leading blanks, nothing after it) or refused by `accept`. A trailing comma
-// is an empty part.
-template <class Accept>
-std::vector<double> comma_separated(const std::string& text, const std::string& option, const std::string& expected,
-                                    Accept accept) {
-  std::vector<double> values;
-  std::stringstream in(text + ",");  // the extra comma makes a trailing one show up as an empty part
-  for (std::string part; std::getline(in, part, ',');) {
-    size_t used = 0;
-    double v = 0.0;
-    try {
-      v = std::stod(part, &used);
-    } catch (const std::exception&) {
-      used = std::string::npos;
-    }
-    if (part.empty() || std::isspace(static_cast<unsigned char>(part[0])) || used != part.size() || !accept(v))
-      throw Error(ExitCode::bad_command_line, option + ": '" + part + "' is not " + expected, option);
-    values.push_back(v);
-  }
-  return values;
-}
-
 class SynthCommand : public BakingCommand {
  public:
   SynthCommand() : BakingCommand("synth", "synthesized window (.exr float, or .png 16-bit)") {}
@@ -46,31 +22,19 @@ class SynthCommand : public BakingCommand {
  private:
   void add_inputs(CLI::App& app) override {
     app.add_option("INPUT", path_, "Analysed exemplar graph (.mbk from `microbake graph`)")->required();
-    app.add_option("--window", window_, "The window's origin and size in pixels of level T")
-        ->type_name("X,Y,W,H")
-        ->required();
-    app.add_option("--jitter", jitter_,
-                   "Per-level randomness r_t in [0, 1], comma-separated from level 0; the last value repeats")
-        ->type_name("R0,R1,...")
-        ->default_val("1,0.6,0.4,0.3");
-    app.add_flag("--no-correction", no_correction_,
-                 "Ignore the transfer functions (inconsistency correction, Sec. 5.3), to compare");
+    add_window_options(app, window_options_, true, "");
   }
 
   std::vector<std::string> output_extensions() const override { return {".png", ".exr"}; }
 
   void check_inputs() override {
-    const std::vector<double> w = comma_separated(window_, "--window", "an integer",
-                                                  [](double v) { return v == std::floor(v) && std::abs(v) <= 0x1p62; });
-    if (w.size() != 4 || w[2] < 1 || w[3] < 1 || w[2] > 65536 || w[3] > 65536)
-      throw Error(ExitCode::bad_command_line, "--window must be X,Y,W,H with 1 <= W, H <= 65536", "--window");
-    synthesis_.x = int64_t(w[0]);
-    synthesis_.y = int64_t(w[1]);
-    synthesis_.width = uint32_t(w[2]);
-    synthesis_.height = uint32_t(w[3]);
-    synthesis_.jitter =
-        comma_separated(jitter_, "--jitter", "a number in [0, 1]", [](double v) { return v >= 0.0 && v <= 1.0; });
-    synthesis_.correct_inconsistency = !no_correction_;
+    const WindowRectangle w = parse_window(window_options_.window, kMaxWindowSide);
+    synthesis_.x = w.x;
+    synthesis_.y = w.y;
+    synthesis_.width = uint32_t(w.width);
+    synthesis_.height = uint32_t(w.height);
+    synthesis_.jitter = parse_jitter(window_options_.jitter);
+    synthesis_.correct_inconsistency = !window_options_.no_correction;
     synthesis_.level = parameters().at("level");
     synthesis_.seed = parameters().at("seed");
     synthesis_.passes = parameters().at("passes");
@@ -107,8 +71,8 @@ class SynthCommand : public BakingCommand {
            std::to_string(synthesis_.y);
   }
 
-  std::string path_, window_, jitter_;
-  bool no_correction_ = false;
+  std::string path_;
+  WindowOptions window_options_;
   SynthesisOptions synthesis_;
   GraphTables graph_;
   Image window_image_;

@@ -77,7 +77,8 @@ std::vector<CommandEntry> command_table() {
        make_bake_command,
        {"microbake bake examples/scenes/colormap.json --out-dir colormap_assets"}},
       {"plan",
-       "Write every asset the scenes need as one command each, for ninja, make, GNU parallel or Slurm",
+       "Write every asset the scenes need (or a synthesis window's tiles) as one command each, for ninja, make, GNU "
+       "parallel or Slurm",
        make_plan_command,
        {"microbake plan examples/scenes/colormap.json --out-dir colormap_assets -o build.ninja",
         "microbake plan examples/scenes/colormap.json --out-dir colormap_assets --format commands -o bake.commands"}},

@@ -27,11 +27,21 @@ CLI::Validator parameter_validator(const Parameter& p) {
       "", p.name);
 }
 
-void SchemaOptions::add(CLI::App& app, const TechniqueSchema& schema) {
+void SchemaOptions::add(CLI::App& app, const TechniqueSchema& schema) { add_each(app, schema, nullptr); }
+
+void SchemaOptions::add_optional_group(CLI::App& app, const TechniqueSchema& schema, const std::string& group) {
+  add_each(app, schema, &group);
+}
+
+void SchemaOptions::add_each(CLI::App& app, const TechniqueSchema& schema, const std::string* optional_group) {
   schema_ = &schema;
-  for (const Parameter& p : schema.parameters) {
+  for (const Parameter& declared : schema.parameters) {
     texts_.emplace_back();
-    if (!p.option.empty()) add_parameter_option(app, p, texts_.back());
+    if (declared.option.empty()) continue;
+    Parameter p = declared;
+    if (optional_group) p.required = false;
+    CLI::Option* option = add_parameter_option(app, p, texts_.back());
+    if (optional_group) option->group(*optional_group);
   }
 }
 

@@ -42,11 +42,16 @@ CLI::Option* add_parameter_option(CLI::App& app, const Parameter& p, T& target) 
 class SchemaOptions {
  public:
   void add(CLI::App& app, const TechniqueSchema& schema);
+  // The same options under help heading `group`, none of them required by the parser: for options that only matter
+  // together with another one (`plan --synth`), whose command checks what they need.
+  void add_optional_group(CLI::App& app, const TechniqueSchema& schema, const std::string& group);
   // After parsing: every parameter of the schema, given or defaulted (null when neither; scene-only ones have their
   // declared default), as JSON values of its type.
   nlohmann::json values() const;
 
  private:
+  void add_each(CLI::App& app, const TechniqueSchema& schema, const std::string* optional_group);
+
   const TechniqueSchema* schema_ = nullptr;
   std::deque<std::string> texts_;  // one per parameter, in schema order (a deque keeps CLI11's pointers valid)
 };

@@ -92,23 +92,33 @@ std::string commands_file(const std::vector<PlannedBake>& bakes) {
   return s;
 }
 
-std::string slurm_script(size_t tasks, const std::filesystem::path& commands, const std::filesystem::path& folder) {
+size_t slurm_task_count(size_t commands, size_t lines_per_task) {
+  return (commands + lines_per_task - 1) / lines_per_task;
+}
+
+std::string slurm_script(size_t commands, size_t lines_per_task, const std::filesystem::path& commands_file,
+                         const std::filesystem::path& folder) {
+  const size_t tasks = slurm_task_count(commands, lines_per_task);
   const std::string array = tasks == 0 ? "0-0" : "1-" + std::to_string(tasks);
   return "#!/bin/bash\n"
          "# Written by " +
          std::string(kHeader) + ".\n" +
-         "# A Slurm job array: task i runs line i of the commands file. Submit with: sbatch THIS_FILE\n"
+         "# A Slurm job array: task i runs lines (i-1)*K+1 .. i*K of the commands file, K = lines_per_task, one after\n"
+         "# another, stopping at the first that fails. Submit with: sbatch THIS_FILE\n"
          "#SBATCH --job-name=microbake-bake\n"
          "#SBATCH --array=" +
          array + "\n#SBATCH --chdir=" + folder.string() +
          "\n"
          "set -euo pipefail\n"
          "commands=" +
-         shell_quoted(commands.string()) +
+         shell_quoted(commands_file.string()) + "\nlines_per_task=" + std::to_string(lines_per_task) +
          "\n"
          "[ \"${SLURM_ARRAY_TASK_ID:-0}\" -ge 1 ] || exit 0  # an empty plan\n"
-         "line=$(sed -n \"${SLURM_ARRAY_TASK_ID}p\" \"$commands\")\n"
-         "exec bash -c \"$line\"\n";
+         "first=$(( (SLURM_ARRAY_TASK_ID - 1) * lines_per_task + 1 ))\n"
+         "last=$(( first + lines_per_task - 1 ))\n"
+         "while IFS= read -r line; do\n"
+         "  bash -c \"$line\" || exit $?\n"
+         "done < <(sed -n \"${first},${last}p\" \"$commands\")\n";
 }
 
 std::filesystem::path slurm_commands_path(const std::filesystem::path& script) {

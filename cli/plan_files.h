@@ -5,7 +5,8 @@
 //   make      a Makefile with the same edges (make remakes it the same way);
 //   commands  one shell command per line, for `parallel --joblog J --resume-failed -a FILE`;
 //   slurm     a job-array script (`sbatch FILE`: --array=1-N) whose task i runs line i of the commands file written
-//             beside it (FILE with its extension replaced by .commands).
+//             beside it (FILE with its extension replaced by .commands); with K lines per task, task i runs lines
+//             (i-1)K+1 .. iK one after another and stops at the first that fails, so N commands need ceil(N/K) tasks.
 // Paths are as the scenes resolve them from the folder where `plan` ran: run the tools from there (the Slurm script
 // changes to it itself).
 #pragma once
@@ -33,8 +34,15 @@ std::string ninja_file(const std::vector<PlannedBake>& bakes, const PlanRegenera
 std::string make_file(const std::vector<PlannedBake>& bakes, const PlanRegeneration& plan,
                       const std::filesystem::path& self);
 std::string commands_file(const std::vector<PlannedBake>& bakes);
-// `commands` is the commands file's path and `folder` the folder to run in, both absolute.
-std::string slurm_script(size_t tasks, const std::filesystem::path& commands, const std::filesystem::path& folder);
+// Slurm refuses array task ids >= MaxArraySize, whose default is 1001.
+inline constexpr size_t kSlurmDefaultMaxArraySize = 1001;
+
+// The array tasks of `commands` lines at `lines_per_task` each.
+size_t slurm_task_count(size_t commands, size_t lines_per_task);
+
+// `commands_file` is the commands file's path and `folder` the folder to run in, both absolute.
+std::string slurm_script(size_t commands, size_t lines_per_task, const std::filesystem::path& commands_file,
+                         const std::filesystem::path& folder);
 
 // The commands file beside a Slurm script: FILE with its extension replaced by ".commands".
 std::filesystem::path slurm_commands_path(const std::filesystem::path& script);

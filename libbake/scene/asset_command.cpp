@@ -24,8 +24,9 @@ std::string exact_value_text(const Parameter& p, const nlohmann::json& value) {
   return text;
 }
 
-// "--opt value", or "--opt=value" when the value starts with '-' (so it is not read as an option).
-void add_option(std::vector<std::string>& words, const std::string& option, const std::string& value) {
+}  // namespace
+
+void append_option(std::vector<std::string>& words, const std::string& option, const std::string& value) {
   if (!value.empty() && value[0] == '-') {
     words.push_back(option + "=" + value);
   } else {
@@ -34,18 +35,16 @@ void add_option(std::vector<std::string>& words, const std::string& option, cons
   }
 }
 
-}  // namespace
-
 std::vector<std::string> asset_command(const AssetRecipe& recipe, const std::filesystem::path& output,
-                                       const std::string& program) {
+                                       const std::string& program, const std::vector<std::string>& extra) {
   std::vector<std::string> words = {program, recipe.kind};
   for (const BakeInput& in : recipe.inputs)
     if (in.option.empty()) words.push_back(in.path.string());
   for (const BakeInput& in : recipe.inputs) {
-    if (!in.option.empty()) add_option(words, in.option, in.path.string());
+    if (!in.option.empty()) append_option(words, in.option, in.path.string());
     if (!in.normal_map) continue;
     if (in.normal_map->convention)
-      add_option(words, "--convention", convention_request_name(in.normal_map->convention));
+      append_option(words, "--convention", convention_request_name(in.normal_map->convention));
     if (in.normal_map->repair) words.push_back("--repair-invalid");
   }
   for (const Parameter& p : technique_schema(recipe.kind).parameters) {
@@ -54,8 +53,9 @@ std::vector<std::string> asset_command(const AssetRecipe& recipe, const std::fil
         recipe.technique_values.contains(p.name) ? recipe.technique_values.at(p.name) : p.default_value;
     if (value.is_null())
       throw std::logic_error("no value for " + recipe.kind + " parameter '" + p.name + "' (an effect's recipe)");
-    add_option(words, p.option, exact_value_text(p, value));
+    append_option(words, p.option, exact_value_text(p, value));
   }
+  words.insert(words.end(), extra.begin(), extra.end());
   words.push_back("-o");
   words.push_back(output.string());
   return words;

@@ -13,9 +13,13 @@
 
 namespace mbk {
 
-// argv of the command; `program` is argv[0] ("microbake").
+// argv of the command; `program` is argv[0] ("microbake"). `extra` words (options the technique's schema does not
+// declare, such as synth's --window) come after the schema's options, before -o.
 std::vector<std::string> asset_command(const AssetRecipe& recipe, const std::filesystem::path& output,
-                                       const std::string& program);
+                                       const std::string& program, const std::vector<std::string>& extra = {});
+
+// Appends "--opt value", or "--opt=value" when the value starts with '-' (so that it is not read as an option).
+void append_option(std::vector<std::string>& words, const std::string& option, const std::string& value);
 
 // A word quoted for a POSIX shell when it needs it: plain words (letters, digits, -_./=+:,@%) as they are, any other
 // in single quotes.

@@ -66,8 +66,8 @@ TEST(Help, EveryCommandsHelpIsPlainAndEndsWithExamples) {
   ASSERT_EQ(names.size(), 17u);
   const std::regex internals(R"(ENUM|TEXT|FLOAT|UINT|\{[a-z0-9]+->|[0-9] - [0-9])");
   const std::regex doubled(R"(\b([A-Za-z]+) \1\b)");
-  const std::regex positionals(R"(Usage: microbake [a-z]+ \[OPTIONS\]((?: [A-Z]+(?:\.\.\.)?)*)\n)");
-  const std::set<std::string> allowed_positionals = {"INPUT",   "SCENE", "SCENE...", "FILE",
+  const std::regex positionals(R"(Usage: microbake [a-z]+ \[OPTIONS\]((?: \[?[A-Z]+(?:\.\.\.)?\]?)*)\n)");
+  const std::set<std::string> allowed_positionals = {"INPUT",   "SCENE", "SCENE...", "[SCENE...]", "FILE",
                                                      "FILE...", "KIND",  "IMAGE",    "REFERENCE"};
   for (const std::string& name : names) {
     const ShellRun help = run(exe() + " " + name + " --help", dir.path());
