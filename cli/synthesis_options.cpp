@@ -36,9 +36,8 @@ std::vector<double> comma_separated(const std::string& text, const std::string& 
 }  // namespace
 
 void add_window_options(CLI::App& app, WindowOptions& options, bool window_required, const std::string& group) {
-  CLI::Option* window =
-      app.add_option("--window", options.window, "The window's origin and size in pixels of level T")
-          ->type_name("X,Y,W,H");
+  CLI::Option* window = app.add_option("--window", options.window, "The window's origin and size in pixels of level T")
+                            ->type_name("X,Y,W,H");
   if (window_required) window->required();
   CLI::Option* jitter =
       app.add_option("--jitter", options.jitter,
@@ -53,12 +52,11 @@ void add_window_options(CLI::App& app, WindowOptions& options, bool window_requi
 }
 
 WindowRectangle parse_window(const std::string& text, uint64_t max_side) {
-  const std::vector<double> w = comma_separated(text, "--window", "an integer", [](double v) {
-    return v == std::floor(v) && std::abs(v) <= 0x1p62;
-  });
+  const std::vector<double> w = comma_separated(text, "--window", "an integer",
+                                                [](double v) { return v == std::floor(v) && std::abs(v) <= 0x1p62; });
   if (w.size() != 4 || w[2] < 1 || w[3] < 1 || w[2] > double(max_side) || w[3] > double(max_side))
-    throw Error(ExitCode::bad_command_line,
-                "--window must be X,Y,W,H with 1 <= W, H <= " + std::to_string(max_side), "--window");
+    throw Error(ExitCode::bad_command_line, "--window must be X,Y,W,H with 1 <= W, H <= " + std::to_string(max_side),
+                "--window");
   return {int64_t(w[0]), int64_t(w[1]), uint64_t(w[2]), uint64_t(w[3])};
 }
 

@@ -50,8 +50,8 @@ std::vector<PlannedBake> plan_synthesis_tiles(const SynthesisTileRequest& reques
       tile.output = request.out_dir / (stem + ".L" + level + "." + origin + request.extension);
       tile.inputs = {request.graph};
       tile.command = asset_command(recipe, tile.output, program, extra);
-      tile.description = "synth " + tile.output.string() + " (" + std::to_string(width) + "x" +
-                         std::to_string(height) + " at " + std::to_string(x) + "," + std::to_string(y) + ")";
+      tile.description = "synth " + tile.output.string() + " (" + std::to_string(width) + "x" + std::to_string(height) +
+                         " at " + std::to_string(x) + "," + std::to_string(y) + ")";
       tiles.push_back(std::move(tile));
     }
   }

@@ -36,6 +36,15 @@ Parameter choice(const std::string& name, std::vector<std::string> choices, cons
   return p;
 }
 
+// The procedural driver: an object of {cells, octaves, gain, seed}, every key optional (libbake/gen/periodic_noise.h).
+std::vector<Parameter> noise_fields() {
+  return {declare("cells", ParameterType::size2, 1, 1u << 20, nlohmann::json::array({8, 8}),
+                  "Noise lattice cells along u and v in one period"),
+          declare("octaves", ParameterType::integer, 1, 16, 4, "fBm octaves"),
+          declare("gain", ParameterType::number, 0, 1, 0.5, "Amplitude factor from one octave to the next"),
+          declare("seed", ParameterType::integer, 0, 4294967295.0, 1, "Lattice gradient seed")};
+}
+
 // The keys of each case (README "Effects colormap, colormap-height, colormap-slope").
 std::vector<Parameter> colormap_parameters(ColormapCase which) {
   std::vector<Parameter> p = {
@@ -50,6 +59,7 @@ std::vector<Parameter> colormap_parameters(ColormapCase which) {
     p.push_back(declare("driver", ParameterType::file, 0, 0, nullptr, "The driver image f (else noise)"));
     p.push_back(declare("noise", ParameterType::object, 0, 0, nullptr,
                         "Procedural driver {cells, octaves, gain, seed} (the default without a driver)"));
+    p.back().fields = noise_fields();
     p.push_back(declare("scale", ParameterType::number, -1e6, 1e6, 1.0, "f is mapped as offset + scale * f"));
     p.push_back(declare("offset", ParameterType::number, -1e6, 1e6, 0.0, "f is mapped as offset + scale * f"));
   }
@@ -64,23 +74,12 @@ std::vector<Parameter> colormap_parameters(ColormapCase which) {
   return p;
 }
 
-// The procedural driver: an object of {cells, octaves, gain, seed}, every key optional.
-nlohmann::json parse_noise(const nlohmann::json* noise, const std::string& path) {
-  static const nlohmann::json kDefaults = nlohmann::json::object();
-  JsonObjectReader n(noise ? *noise : kDefaults, path);
-  std::array<uint32_t, 2> cells{8, 8};
-  if (const auto* v = n.optional("cells")) {
-    if (!v->is_array() || v->size() != 2)
-      throw Error(ExitCode::invalid_input, "expected [cells_u, cells_v]", n.child("cells"));
-    for (size_t i = 0; i < 2; ++i) cells[i] = json_uint((*v)[i], json_index_path(n.child("cells"), i), 1, 1u << 20);
-  }
-  const auto* octaves = n.optional("octaves");
-  const auto* gain = n.optional("gain");
-  const auto* seed = n.optional("seed");
-  nlohmann::json o = {{"cells", cells},
-                      {"octaves", octaves ? json_uint(*octaves, n.child("octaves"), 1, 16) : 4u},
-                      {"gain", gain ? json_number(*gain, n.child("gain"), 0, 1) : 0.5},
-                      {"seed", seed ? json_uint(*seed, n.child("seed"), 0, 0xffffffffu) : 1u}};
+// The noise object's declared keys, each given or defaulted.
+nlohmann::json parse_noise(const Parameter& noise, const nlohmann::json* given, const std::string& path) {
+  static const nlohmann::json kNone = nlohmann::json::object();
+  JsonObjectReader n(given ? *given : kNone, path);
+  nlohmann::json o = nlohmann::json::object();
+  for (const Parameter& field : noise.fields) o[field.name] = read_parameter(n, field);
   n.reject_unknown_keys();
   return o;
 }
@@ -99,7 +98,7 @@ EffectUse parse_colormap_options(JsonObjectReader& r, const std::filesystem::pat
       const nlohmann::json* noise = r.optional("noise");
       if (noise && o.contains("driver"))
         throw Error(ExitCode::invalid_input, "give either 'driver' or 'noise', not both", r.child("noise"));
-      if (!o.contains("driver")) o["noise"] = parse_noise(noise, r.child("noise"));
+      if (!o.contains("driver")) o["noise"] = parse_noise(p, noise, r.child("noise"));
     } else if (p.name == "weight") {
       if (r.optional("weight") && o["combine"] == "product")
         throw Error(ExitCode::invalid_input, "a product combination takes no weights", r.child("weight"));

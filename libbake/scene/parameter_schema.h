@@ -39,6 +39,9 @@ struct Parameter {
   std::string doc;
   // For an effect key that is a technique's parameter under another name or a narrower range: "rmq.patch".
   std::string source;
+  // object: the keys it holds when they are a fixed set (each read by read_parameter, others refused); empty: the
+  // effect reads the object itself.
+  std::vector<Parameter> fields;
 };
 
 struct TechniqueSchema {

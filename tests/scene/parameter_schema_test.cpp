@@ -2,10 +2,12 @@
 // effect reads exactly its declared keys, with the declared defaults and ranges (the edges accepted, one step beyond
 // refused at the key's JSON path); an effect key taken from a technique stays inside the technique's range; every
 // technique parameter with an option is that command's option in `microbake <technique> --help` with the same values
-// and default, refused one step beyond its range by the real command; and the README's option table of the command
-// lists it with the same default. A drift in any of them fails here.
+// and default, refused one step beyond its range by the real command; the README's option table of the command
+// lists it with the same default; and the README's scene-file tables list every effect key (and the keys of an object
+// key with declared fields) with the same default. A drift in any of them fails here.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -259,6 +261,130 @@ TEST(ParameterSchema, TheReadmeTableOfEachCommandListsItsOptionsWithTheirDefault
       }
     }
   }
+}
+
+// A table row of README.md's "Scene files" chapter in a table whose last column is "default": its cells (trimmed),
+// and the "####" heading above it.
+struct ReadmeRow {
+  std::vector<std::string> cells;
+  std::string heading;
+  bool has_default = false;  // its table's last column is "default"
+};
+
+std::vector<ReadmeRow> readme_scene_rows() {
+  std::ifstream in(std::string(MICROBAKE_SOURCE_DIR) + "/README.md");
+  std::vector<ReadmeRow> rows;
+  bool inside = false, in_default_table = false;
+  std::string heading;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("## ", 0) == 0) inside = line == "## Scene files";
+    if (line.empty()) in_default_table = false;
+    if (line.rfind("#### ", 0) == 0) heading = line;
+    if (!inside) continue;
+    if (line.rfind("|---", 0) == 0 && !rows.empty()) {  // the row above was the header: keep tables with defaults
+      in_default_table = rows.back().cells.back() == "default";
+      rows.pop_back();
+      continue;
+    }
+    if (line.rfind("| ", 0) != 0) continue;
+    ReadmeRow row{{}, heading, in_default_table};
+    size_t from = 1;
+    for (size_t at = from; (at = line.find('|', at)) != std::string::npos; ++at) {
+      if (line[at - 1] == '\\') continue;  // an escaped "\|" inside a cell
+      std::string cell = line.substr(from, at - from);
+      cell.erase(0, cell.find_first_not_of(' '));
+      cell.erase(cell.find_last_not_of(' ') + 1);
+      row.cells.push_back(cell);
+      from = at + 1;
+    }
+    rows.push_back(row);
+  }
+  std::vector<ReadmeRow> kept;
+  std::copy_if(rows.begin(), rows.end(), std::back_inserter(kept), [](const ReadmeRow& r) { return r.has_default; });
+  return kept;
+}
+
+// The part of a row's cell that belongs to key `index` of a cell listing several ("`scale`, `offset`" | "`1`, `0`"),
+// without backticks.
+std::string cell_part(const std::string& cell, size_t index, size_t parts) {
+  std::vector<std::string> pieces;
+  std::stringstream in(cell);
+  for (std::string piece; std::getline(in, piece, ',');) pieces.push_back(piece);
+  std::string text = pieces.size() == parts ? pieces[index] : cell;
+  text.erase(std::remove(text.begin(), text.end(), '`'), text.end());
+  text.erase(0, text.find_first_not_of(' '));
+  return text;
+}
+
+// The README row of key `key` about effect `effect`: a row with a cell listing `key`, and either a cell naming the
+// effect or "all", or no such cell and the effect in the heading above it. Sets `index`/`parts` to the key's place in
+// its cell; nullptr when there is none.
+const ReadmeRow* readme_row(const std::vector<ReadmeRow>& rows, const std::string& effect, const std::string& key,
+                            size_t& index, size_t& parts) {
+  const std::string quoted_effect = "`" + effect + "`";
+  for (const ReadmeRow& row : rows) {
+    for (size_t c = 0; c < row.cells.size(); ++c) {
+      const std::string& cell = row.cells[c];
+      std::vector<std::string> keys;
+      std::stringstream in(cell);
+      for (std::string piece; std::getline(in, piece, ',');) {
+        piece.erase(0, piece.find_first_not_of(' '));
+        keys.push_back(piece);
+      }
+      const auto found = std::find(keys.begin(), keys.end(), "`" + key + "`");
+      if (found == keys.end()) continue;
+      bool names_effects = false, names_this = false;
+      for (size_t o = 0; o < row.cells.size(); ++o) {
+        if (o == c) continue;
+        const bool all = row.cells[o] == "all";
+        const bool effect_cell = all || row.cells[o].find("`colormap") == 0 || row.cells[o] == "`sh`" ||
+                                 row.cells[o] == "`vmf`" || row.cells[o] == "`toksvig`";
+        names_effects = names_effects || effect_cell;
+        names_this = names_this || all || (effect_cell && row.cells[o].find(quoted_effect) != std::string::npos);
+      }
+      const bool heading_names = row.heading.find(quoted_effect) != std::string::npos;
+      if (names_this || (!names_effects && heading_names)) {
+        index = size_t(found - keys.begin());
+        parts = keys.size();
+        return &row;
+      }
+    }
+  }
+  return nullptr;
+}
+
+// A declared default as the README's default cell must spell it.
+void expect_readme_default(const Parameter& p, const std::string& cell, const std::string& what) {
+  if (p.required || (p.type == ParameterType::file && p.name != "driver")) {
+    EXPECT_EQ(cell.rfind("required", 0), 0u) << what << ": " << cell;
+  } else if (p.type == ParameterType::object && !p.fields.empty()) {
+    json defaults = json::object();
+    for (const Parameter& f : p.fields) defaults[f.name] = f.default_value;
+    EXPECT_EQ(json::parse(cell, nullptr, false), defaults) << what << ": " << cell;
+  } else if (p.type == ParameterType::size2) {
+    EXPECT_EQ(json::parse(cell, nullptr, false), p.default_value) << what << ": " << cell;
+  } else if (p.default_value.is_number()) {
+    EXPECT_EQ(std::stod(cell), p.default_value.get<double>()) << what << ": " << cell;
+  } else if (p.default_value.is_string()) {
+    EXPECT_EQ(cell.substr(0, cell.find(' ')), p.default_value.get<std::string>()) << what << ": " << cell;
+  }
+}
+
+TEST(ParameterSchema, TheReadmeListsEveryEffectKeyWithItsDefault) {
+  const std::vector<ReadmeRow> rows = readme_scene_rows();
+  ASSERT_FALSE(rows.empty());
+  size_t checked = 0;
+  for (const EffectInfo& e : effect_registry()) {
+    for (const Parameter& p : e.parameters) {
+      const std::string what = "effect " + e.name + " key " + p.name;
+      size_t index = 0, parts = 1;
+      const ReadmeRow* row = readme_row(rows, e.name, p.name, index, parts);
+      ASSERT_NE(row, nullptr) << what << " is not in a table of README.md's \"Scene files\"";
+      expect_readme_default(p, cell_part(row->cells.back(), index, parts), what);
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 30u);
 }
 
 }  // namespace
