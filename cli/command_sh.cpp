@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "cli/baking_command.h"
+#include "formats/mip_levels.h"
 #include "libbake/core/sh_basis.h"
 #include "libbake/filter/sh_asset.h"
 #include "libbake/scene/technique_parameters.h"
@@ -17,9 +18,8 @@ class ShCommand : public NormalMapBakingCommand {
  private:
   void bake(Progress& progress) override {
     options_ = sh_bake_options(parameters());
-    ShPyramid pyramid = build_sh_pyramid(map().map, options_.order, progress);
-    levels_ = pyramid.levels.size() + 1;
-    asset_ = sh_asset_writer(map(), std::move(pyramid), options_);
+    levels_ = mip_level_sizes(map().map.width, map().map.height).size();
+    asset_ = bake_sh_asset(map(), options_, progress);
   }
 
   std::string summary() const override {

@@ -39,7 +39,7 @@ uint32_t rmq_quantize_down(double v, const RmqRange& range, uint32_t bits);
 
 // rmq_dequantize / rmq_quantize_up / rmq_quantize_down for many values of one range: the quantum and its
 // reciprocal computed once, the common case inline and without a division (the guess ceil((v - lo) / quantum)
-// is at most a code off after rounding and is checked against value(); otherwise a binary search).
+// is checked against value(); when rounding put it off, a binary search).
 class RmqQuantizer {
  public:
   RmqQuantizer(const RmqRange& range, uint32_t bits)
@@ -57,13 +57,12 @@ class RmqQuantizer {
   }
   uint32_t up(double v) const {
     if (fast_ && v >= range_.lo && v <= range_.hi) {
-      const double guess = std::ceil((v - range_.lo) * inverse_);
-      const uint32_t g = uint32_t(std::clamp(guess, 0.0, double(q_max_)));
-      for (uint32_t q = g > 0 ? g - 1 : 0; q <= std::min(g + 1, q_max_); ++q)
-        if (value(q) >= v) {
-          if (q == 0 || value(q - 1) < v) return q;
-          break;
-        }
+      // floor((v - lo) / quantum) by truncation (the argument is >= 0), then one code up when its value is
+      // still below v: ceil((v - lo) / quantum) up to rounding, accepted when value() confirms it.
+      const double t = (v - range_.lo) * inverse_;
+      uint32_t q = t < double(q_max_) ? uint32_t(t) : q_max_;
+      if (q < q_max_ && value(q) < v) ++q;
+      if (value(q) >= v && (q == 0 || value(q - 1) < v)) return q;
     }
     return up_by_search(v);
   }

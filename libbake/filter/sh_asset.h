@@ -22,10 +22,12 @@ struct ShBakeOptions {
   ShWindow window = ShWindow::none;
 };
 
-// Sections: `normals` f32 [H, W, 3] (level 0: g_lm = Y_lm(n)); `level_k` for k = 1..K-1, f16 or f32
-// [h_k, w_k, (order+1)^2]; `window` f32 [order + 1]. Metadata parameters {width, height, levels, order,
+// Bakes the asset: sections `normals` f32 [H, W, 3] (level 0: g_lm = Y_lm(n)); `level_k` for k = 1..K-1, f16 or
+// f32 [h_k, w_k, (order+1)^2]; `window` f32 [order + 1]. Metadata parameters {width, height, levels, order,
 // coefficients, precision, window}; statistics per level: mean length of the mean normal and the largest
-// rounding error of the stored coefficients.
-AssetWriter sh_asset_writer(const LoadedNormalMap& input, ShPyramid pyramid, const ShBakeOptions& options);
+// rounding error of the stored coefficients. The pyramid's rows are converted to the stored precision as they
+// are computed (stream_sh_pyramid), in parallel, each straight into its section's buffer, which the writer
+// then takes over: no level is held in f32 beside its f16 copy, and no buffer is copied.
+AssetWriter bake_sh_asset(const LoadedNormalMap& input, const ShBakeOptions& options, Progress& progress);
 
 }  // namespace mbk

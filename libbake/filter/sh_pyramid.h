@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "formats/mip_levels.h"
 #include "libbake/core/progress.h"
 #include "libbake/image/normal_map.h"
 
@@ -31,8 +32,25 @@ struct ShPyramid {
   std::vector<ShLevel> levels;  // levels[k - 1] is MIP level k (level 0 is the normal map itself)
 };
 
+// Receives the coefficient rows of levels 1..K-1 as they are computed, so that a bake converts and stores them
+// without holding the largest level in f32 (at 2048^2, order 8, level 1 is 340 MiB in f32).
+class ShRowSink {
+ public:
+  virtual ~ShRowSink() = default;
+  // Called once, before any row: levels[k - 1] is the size of level k; count coefficients per texel.
+  virtual void start(const std::vector<LevelSize>& levels, int count) = 0;
+  // Row `row` of level k >= 1: width * count coefficients, texel-major. Called from any thread, every row of
+  // every level exactly once, in no particular order; the pointer is valid during the call only.
+  virtual void take_row(size_t k, uint32_t row, const float* coefficients) = 0;
+};
+
+// Computes the pyramid into `sink`. Memory: level 1 is never held whole; when level 2 nests in level 1 it is
+// built in the same pass from each pair of level-1 rows (held whole in f32, a quarter of level 1, for level 3).
 // Deterministic whatever the thread count (per-row results, accumulated in double, stored in float).
 // Error(runtime_failure) for an order outside 0..kMaxShOrder.
+void stream_sh_pyramid(const NormalMap& map, int order, ShRowSink& sink, Progress& progress);
+
+// The whole pyramid in f32 (stream_sh_pyramid into memory).
 ShPyramid build_sh_pyramid(const NormalMap& map, int order, Progress& progress);
 
 }  // namespace mbk

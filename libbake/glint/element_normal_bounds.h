@@ -30,6 +30,10 @@ namespace mbk {
 
 // The half-widths of the interval for n_x and n_y: (D^x + D^y) * (1/2 - 1/(2K) + 3 sigma_h / K) (above).
 Vec2 element_normal_reach(const NormalMap& example, uint32_t x, uint32_t row);
+// element_normal_reach for every texel of one row, bit for bit, into reach_x[x] and reach_y[x] (width
+// entries each): each difference between adjacent texels of rows row - 1 .. row + 1 is taken once, then
+// maximised over the 3 x 3 blocks, instead of per texel (the RMQ bake's inner loop).
+void element_normal_reach_row(const NormalMap& example, uint32_t row, double* reach_x, double* reach_y);
 // The interval of n_x and n_y (the same bounds type as an RMQ query's answer) from the texel's normal and reach.
 RmqBounds element_normal_bounds(const Vec3f& normal, const Vec2& reach);
 RmqBounds element_normal_bounds(const NormalMap& example, uint32_t x, uint32_t row);

@@ -23,19 +23,28 @@ struct RowLeafSums {
   double half_x = 0, max_half_x = 0, half_y = 0, max_half_y = 0, slack = 0, max_slack = 0;
 };
 
-// Every texel's element reach (computed once, used by both passes over the leaves), and the range: per
-// component the min of the leaf minima and the max of the leaf maxima.
-std::array<RmqRange, 2> leaf_range(const NormalMap& example, std::vector<Vec2>& reach, Progress& progress) {
+// A row's leaf intervals, [n - reach, n + reach] per component (element_normal_bounds.h), computed row by row
+// from the row's reaches (element_normal_reach_row) into per-thread scratch.
+struct LeafRow {
+  std::vector<double> reach_x, reach_y;
+  void compute(const NormalMap& example, uint32_t row) {
+    reach_x.resize(example.width), reach_y.resize(example.width);
+    element_normal_reach_row(example, row, reach_x.data(), reach_y.data());
+  }
+};
+
+// The range: per component the min of the leaf minima and the max of the leaf maxima.
+std::array<RmqRange, 2> leaf_range(const NormalMap& example, Progress& progress) {
   std::vector<RowRange> rows(example.height);
-  reach.resize(size_t(example.width) * example.height);
   parallel_for(0, example.height, [&](int64_t row) {
-    RowRange& r = rows[row];
+    thread_local LeafRow leaf;
+    leaf.compute(example, uint32_t(row));
+    const Vec3f* n = &example.texels[size_t(row) * example.width];
+    RowRange& r = rows[size_t(row)];
     for (uint32_t x = 0; x < example.width; ++x) {
-      const size_t t = size_t(row) * example.width + x;
-      reach[t] = element_normal_reach(example, x, uint32_t(row));
-      const RmqBounds b = element_normal_bounds(example.texels[t], reach[t]);
-      r.lo_x = std::min(r.lo_x, b.min_x), r.hi_x = std::max(r.hi_x, b.max_x);
-      r.lo_y = std::min(r.lo_y, b.min_y), r.hi_y = std::max(r.hi_y, b.max_y);
+      const double nx = n[x].x(), ny = n[x].y();
+      r.lo_x = std::min(r.lo_x, nx - leaf.reach_x[x]), r.hi_x = std::max(r.hi_x, nx + leaf.reach_x[x]);
+      r.lo_y = std::min(r.lo_y, ny - leaf.reach_y[x]), r.hi_y = std::max(r.hi_y, ny + leaf.reach_y[x]);
     }
     progress.advance();
   });
@@ -47,46 +56,35 @@ std::array<RmqRange, 2> leaf_range(const NormalMap& example, std::vector<Vec2>& 
   return {RmqRange{all.lo_x, all.hi_x}, RmqRange{all.lo_y, all.hi_y}};
 }
 
-template <typename Code>
-void store_entry(uint8_t* table, uint64_t index, const uint32_t (&codes)[4]) {
-  const Code c[4] = {Code(codes[0]), Code(codes[1]), Code(codes[2]), Code(codes[3])};
-  std::memcpy(table + index * sizeof c, c, sizeof c);
-}
-
-template <typename Code>
-void load_entry(const uint8_t* table, uint64_t index, uint32_t (&codes)[4]) {
-  Code c[4];
-  std::memcpy(c, table + index * sizeof c, sizeof c);
-  for (int i = 0; i < 4; ++i) codes[i] = c[i];
-}
-
 // Level 0: the quantized leaf intervals, and the leaf statistics.
 template <typename Code>
-RmqLeafStatistics quantize_leaves(const NormalMap& example, const std::vector<Vec2>& reach, RmqTable& t,
-                                  Progress& progress) {
+RmqLeafStatistics quantize_leaves(const NormalMap& example, RmqTable& t, Progress& progress) {
   const RmqLayout& L = t.layout;
   const RmqQuantizer quantizer[2] = {RmqQuantizer(t.range[0], L.bits), RmqQuantizer(t.range[1], L.bits)};
   std::vector<RowLeafSums> rows(L.height);
   parallel_for(0, L.height, [&](int64_t row) {
-    RowLeafSums& s = rows[row];
+    thread_local LeafRow leaf;
+    leaf.compute(example, uint32_t(row));
+    const Vec3f* n = &example.texels[size_t(row) * L.width];
+    Code* out = reinterpret_cast<Code*>(t.table.data()) + 4 * L.entry_index(0, 0, uint32_t(row));
+    RowLeafSums s;  // a local, so that the sums stay in registers
     for (uint32_t x = 0; x < L.width; ++x) {
-      const size_t texel = size_t(row) * L.width + x;
-      const RmqBounds b = element_normal_bounds(example.texels[texel], reach[texel]);
-      const double ends[4] = {b.min_x, b.max_x, b.min_y, b.max_y};
-      uint32_t codes[4];
+      const double ends[4] = {n[x].x() - leaf.reach_x[x], n[x].x() + leaf.reach_x[x], n[x].y() - leaf.reach_y[x],
+                              n[x].y() + leaf.reach_y[x]};
       for (int c = 0; c < 4; ++c) {
         const RmqQuantizer& q = quantizer[c / 2];
-        codes[c] = c % 2 == 0 ? q.down(ends[c]) : q.up(ends[c]);
-        const double slack = std::abs(q.value(codes[c]) - ends[c]);
+        const uint32_t code = c % 2 == 0 ? q.down(ends[c]) : q.up(ends[c]);
+        out[4 * x + c] = Code(code);
+        const double slack = std::abs(q.value(code) - ends[c]);
         const double in_quanta = q.quantum() > 0 ? slack / q.quantum() : 0.0;
         s.slack += in_quanta;
         s.max_slack = std::max(s.max_slack, in_quanta);
       }
-      store_entry<Code>(t.table.data(), L.entry_index(0, x, uint32_t(row)), codes);
-      const double hx = 0.5 * (b.max_x - b.min_x), hy = 0.5 * (b.max_y - b.min_y);
+      const double hx = 0.5 * (ends[1] - ends[0]), hy = 0.5 * (ends[3] - ends[2]);
       s.half_x += hx, s.max_half_x = std::max(s.max_half_x, hx);
       s.half_y += hy, s.max_half_y = std::max(s.max_half_y, hy);
     }
+    rows[size_t(row)] = s;
     progress.advance();
   });
   RmqLeafStatistics stats;
@@ -102,32 +100,38 @@ RmqLeafStatistics quantize_leaves(const NormalMap& example, const std::vector<Ve
   return stats;
 }
 
-// Level k from level k - 1 ([Wang20] Algorithm 1, bottom-up): the four children at offsets 0 and 2^(k-1),
-// those outside the example skipped.
+// Level k from level k - 1 ([Wang20] Algorithm 1, bottom-up), one pass over the rows: entry (x, row) combines the
+// children (x, row), (x + h, row), (x, row + h), (x + h, row + h), h = 2^(k-1), those outside the example
+// skipped (a child row below the example is replaced by the row itself: min and max are idempotent). Codes run
+// min_x, max_x, min_y, max_y: even codes take the smallest, odd the largest; loops over a row's codes, so that
+// the compiler vectorises them.
 template <typename Code>
 void build_level(RmqTable& t, uint32_t k, Progress& progress) {
   const RmqLayout& L = t.layout;
   const uint32_t half = 1u << (k - 1);
+  const size_t row_codes = 4 * size_t(L.width), shift = 4 * size_t(std::min(half, L.width));
+  Code* codes = reinterpret_cast<Code*>(t.table.data());
   parallel_for(0, L.height, [&](int64_t row64) {
     const uint32_t row = uint32_t(row64);
-    for (uint32_t x = 0; x < L.width; ++x) {
-      uint32_t out[4] = {rmq_code_max(L.bits), 0, rmq_code_max(L.bits), 0};
-      for (uint32_t dy = 0; dy <= half && row + dy < L.height; dy += half)
-        for (uint32_t dx = 0; dx <= half && x + dx < L.width; dx += half) {
-          uint32_t child[4];
-          load_entry<Code>(t.table.data(), L.entry_index(k - 1, x + dx, row + dy), child);
-          out[0] = std::min(out[0], child[0]), out[1] = std::max(out[1], child[1]);
-          out[2] = std::min(out[2], child[2]), out[3] = std::max(out[3], child[3]);
-        }
-      store_entry<Code>(t.table.data(), L.entry_index(k, x, row), out);
+    const Code* top = codes + 4 * L.entry_index(k - 1, 0, row);
+    const Code* bottom = row + half < L.height ? codes + 4 * L.entry_index(k - 1, 0, row + half) : top;
+    Code* out = codes + 4 * L.entry_index(k, 0, row);
+    size_t i = 0;
+    for (; i < row_codes - shift; i += 2) {  // the four children inside the example
+      out[i] = std::min({top[i], bottom[i], top[i + shift], bottom[i + shift]});
+      out[i + 1] = std::max({top[i + 1], bottom[i + 1], top[i + 1 + shift], bottom[i + 1 + shift]});
+    }
+    for (; i < row_codes; i += 2) {  // x + h outside the example
+      out[i] = std::min(top[i], bottom[i]);
+      out[i + 1] = std::max(top[i + 1], bottom[i + 1]);
     }
     progress.advance();
   });
 }
 
 template <typename Code>
-void build_codes(const NormalMap& example, const std::vector<Vec2>& reach, RmqTable& t, Progress& progress) {
-  t.leaf = quantize_leaves<Code>(example, reach, t, progress);
+void build_codes(const NormalMap& example, RmqTable& t, Progress& progress) {
+  t.leaf = quantize_leaves<Code>(example, t, progress);
   for (uint32_t k = 1; k < t.layout.levels; ++k) build_level<Code>(t, k, progress);
 }
 
@@ -148,13 +152,12 @@ RmqTable build_rmq_table(const NormalMap& example, uint32_t patch, uint32_t bits
                                                 " (patch: a power of two in [1, 4096] not above the example's "
                                                 "smaller side; bits: 8 or 16)");
   progress.start("rmq table", uint64_t(example.height) * (t.layout.levels + 1));
-  std::vector<Vec2> reach;
-  t.range = leaf_range(example, reach, progress);
+  t.range = leaf_range(example, progress);
   t.table.resize(t.layout.table_bytes());  // every entry of every level is written below
   if (bits == 8)
-    build_codes<uint8_t>(example, reach, t, progress);
+    build_codes<uint8_t>(example, t, progress);
   else
-    build_codes<uint16_t>(example, reach, t, progress);
+    build_codes<uint16_t>(example, t, progress);
   progress.finish();
   return t;
 }

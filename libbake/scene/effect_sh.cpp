@@ -19,15 +19,15 @@ EffectInfo sh_effect() {
     // The parameters the asset records (sh_asset.h) that the options decide.
     const nlohmann::json parameters = {
         {"order", bake.order}, {"precision", precision_name(bake.precision)}, {"window", window_name(bake.window)}};
-    return std::vector<AssetRecipe>{
-        {"sh",
-         parameters,
-         {map},
-         [map, bake](Progress& progress) {
-           const LoadedNormalMap input = load_normal_map(map.path, map.normal_map->load_options());
-           return sh_asset_writer(input, build_sh_pyramid(input.map, bake.order, progress), bake);
-         },
-         use.options}};
+    return std::vector<AssetRecipe>{{"sh",
+                                     parameters,
+                                     {map},
+                                     [map, bake](Progress& progress) {
+                                       const LoadedNormalMap input =
+                                           load_normal_map(map.path, map.normal_map->load_options());
+                                       return bake_sh_asset(input, bake, progress);
+                                     },
+                                     use.options}};
   };
   return e;
 }

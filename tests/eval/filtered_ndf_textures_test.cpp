@@ -17,9 +17,9 @@ namespace {
 Vec2 centre_uv(uint32_t w, uint32_t h, uint32_t x, uint32_t row) { return Vec2((x + 0.5) / w, 1.0 - (row + 0.5) / h); }
 
 Asset sh_asset(const NormalMap& map, int order) {
-  const ShPyramid p = build_sh_pyramid(map, order, Progress::silent());
-  return Asset::parse(sh_asset_writer(test::loaded_map(map), p, {order, ShPrecision::f32, ShWindow::hann}).serialize(),
-                      "sh");
+  return Asset::parse(
+      bake_sh_asset(test::loaded_map(map), {order, ShPrecision::f32, ShWindow::hann}, Progress::silent()).serialize(),
+      "sh");
 }
 
 TEST(ShNdfTexture, TexelCentresAndLevelBlends) {

@@ -41,8 +41,7 @@ TEST(RealMapsFiltering, ShAndVmfAssetsValidate) {
   for (const auto& p : files) {
     const LoadedNormalMap input = load_normal_map(p, {YConvention::plus_y, InvalidTexelPolicy::repair});
     const ShBakeOptions sh{8, ShPrecision::f16, ShWindow::none};
-    for (const Finding& f :
-         validate_asset(sh_asset_writer(input, build_sh_pyramid(input.map, 8, Progress::silent()), sh).serialize()))
+    for (const Finding& f : validate_asset(bake_sh_asset(input, sh, Progress::silent()).serialize()))
       ADD_FAILURE() << p << " sh: " << f.id << ": " << f.message;
     const LoadedNormalMap small = test::loaded_map(crop(input.map, 64));
     const VmfBakeOptions vmf{4, {}};

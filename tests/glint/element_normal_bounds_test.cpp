@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "libbake/glint/element_normal_bounds.h"
 #include "libbake/glint/example_bilinear.h"
@@ -80,6 +81,29 @@ TEST(ElementNormalBounds, LinearMapReachesExactlyTheLargestSubElement) {
       EXPECT_NEAR(leaf.max_x, all.max_x, 1e-7);
       EXPECT_NEAR(leaf.min_y, all.min_y, 1e-7);
       EXPECT_NEAR(leaf.max_y, all.max_y, 1e-7);
+    }
+}
+
+TEST(ElementNormalBounds, RowReachIsTheTexelReachBitForBit) {
+  // Random maps with one-texel axes and 2-texel sides (every border case of the 3 x 3 block), and a map whose
+  // rows differ by exact steps (many ties between the maxima).
+  std::vector<NormalMap> maps;
+  for (const auto& [w, h] : {std::pair{37u, 23u}, std::pair{1u, 6u}, std::pair{5u, 1u}, std::pair{1u, 1u},
+                             std::pair{2u, 2u}, std::pair{2u, 7u}})
+    maps.push_back(random_map(w, h, w * 17 + h));
+  NormalMap steps;
+  steps.width = 9, steps.height = 5;
+  for (uint32_t i = 0; i < 45; ++i) steps.texels.emplace_back(float(i % 3) * 0.25f, float(i % 4) * -0.125f, 0.5f);
+  maps.push_back(steps);
+  for (const NormalMap& m : maps)
+    for (uint32_t row = 0; row < m.height; ++row) {
+      std::vector<double> rx(m.width, -1.0), ry(m.width, -1.0);
+      element_normal_reach_row(m, row, rx.data(), ry.data());
+      for (uint32_t x = 0; x < m.width; ++x) {
+        const Vec2 texel = element_normal_reach(m, x, row);
+        EXPECT_EQ(rx[x], texel.x()) << m.width << "x" << m.height << " texel " << x << "," << row;
+        EXPECT_EQ(ry[x], texel.y()) << m.width << "x" << m.height << " texel " << x << "," << row;
+      }
     }
 }
 

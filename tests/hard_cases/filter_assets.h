@@ -19,8 +19,7 @@ inline Asset parse_valid(const std::vector<uint8_t>& bytes) {
 
 inline Asset bake_sh(const NormalMap& map, int order, ShPrecision precision) {
   const ShBakeOptions options{order, precision, ShWindow::none};
-  return parse_valid(
-      sh_asset_writer(loaded_map(map), build_sh_pyramid(map, order, Progress::silent()), options).serialize());
+  return parse_valid(bake_sh_asset(loaded_map(map), options, Progress::silent()).serialize());
 }
 
 inline Asset bake_vmf(const NormalMap& map, int lobes, double align) {
