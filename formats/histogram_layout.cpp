@@ -81,7 +81,9 @@ HistogramAssetView histogram_asset_view(const Asset& asset) {
   view.bins = {asset.read<double>(kHistogramThetaEdgesSection), p["phi_bins"].get<uint32_t>()};
   view.theta_centres = asset.read<double>(kHistogramThetaCentresSection);
   const std::span<const uint8_t> bytes = asset.bytes_of(asset.section(kHistogramCountsSection));
-  view.table = {p["width"].get<uint32_t>(), p["height"].get<uint32_t>(), view.bins.count(),
+  view.table = {p["width"].get<uint32_t>(),
+                p["height"].get<uint32_t>(),
+                view.bins.count(),
                 {reinterpret_cast<const uint32_t*>(bytes.data()), bytes.size() / sizeof(uint32_t)}};
   return view;
 }

@@ -32,8 +32,8 @@ std::string shape_text(const std::vector<uint64_t>& shape) {
 
 void check_histogram(const Asset& a, std::vector<Finding>& out) {
   const auto& p = a.metadata()["parameters"];
-  if (!p.is_object() || !unsigned_in(p, "width", 1, kHistogramMaxSide) || !unsigned_in(p, "height", 1, kHistogramMaxSide) ||
-      !unsigned_in(p, "theta_bins", 1, kHistogramMaxThetaBins) ||
+  if (!p.is_object() || !unsigned_in(p, "width", 1, kHistogramMaxSide) ||
+      !unsigned_in(p, "height", 1, kHistogramMaxSide) || !unsigned_in(p, "theta_bins", 1, kHistogramMaxThetaBins) ||
       !unsigned_in(p, "theta_bins_requested", 1, kHistogramMaxThetaBins) ||
       !unsigned_in(p, "phi_bins", 1, kHistogramMaxPhiBins) || !p.contains("method") || p["method"] != "exact" ||
       p["theta_bins"].get<uint64_t>() > p["theta_bins_requested"].get<uint64_t>()) {
@@ -48,13 +48,12 @@ void check_histogram(const Asset& a, std::vector<Finding>& out) {
                                                                   {kHistogramCountsSection, {H + 1, W + 1, B}}};
   for (const auto& [name, shape] : shapes) {
     const SectionInfo* s = a.find(name);
-    const ElementType type =
-        std::string_view(name) == kHistogramCountsSection ? ElementType::u32 : ElementType::f64;
+    const ElementType type = std::string_view(name) == kHistogramCountsSection ? ElementType::u32 : ElementType::f64;
     if (!s || s->type != type || s->shape != shape) {
-      out.push_back(make_finding(msg::histogram_section_shape,
-                                 "'" + std::string(name) + "' should be " + std::string(element_name(type)) + " " +
-                                     shape_text(shape),
-                                 {{"section", name}}));
+      out.push_back(make_finding(
+          msg::histogram_section_shape,
+          "'" + std::string(name) + "' should be " + std::string(element_name(type)) + " " + shape_text(shape),
+          {{"section", name}}));
       return;
     }
   }
@@ -106,19 +105,19 @@ void check_histogram(const Asset& a, std::vector<Finding>& out) {
       for (uint64_t b = 0; b < B; ++b) {
         const int64_t c = int64_t(s11[b]) - s01[b] - s10[b] + s00[b];
         if (c < 0) {
-          out.push_back(make_finding(msg::histogram_negative_count,
-                                     "texel (" + number_text(x) + ", " + number_text(y) + "), bin " + number_text(b) +
-                                         ": " + number_text(c),
-                                     {{"section", kHistogramCountsSection}}));
+          out.push_back(make_finding(
+              msg::histogram_negative_count,
+              "texel (" + number_text(x) + ", " + number_text(y) + "), bin " + number_text(b) + ": " + number_text(c),
+              {{"section", kHistogramCountsSection}}));
           return;
         }
         sum += c;
       }
       if (sum != 1) {
-        out.push_back(make_finding(msg::histogram_count_not_area,
-                                   "texel (" + number_text(x) + ", " + number_text(y) + "): counts sum to " +
-                                       number_text(sum),
-                                   {{"section", kHistogramCountsSection}}));
+        out.push_back(
+            make_finding(msg::histogram_count_not_area,
+                         "texel (" + number_text(x) + ", " + number_text(y) + "): counts sum to " + number_text(sum),
+                         {{"section", kHistogramCountsSection}}));
         return;
       }
     }

@@ -22,8 +22,8 @@ std::vector<uint32_t> texel_bins(const NormalMap& map, const HistogramBins& bins
   return out;
 }
 
-UninitializedVector<uint32_t> bin_count_table(const std::vector<uint32_t>& texel_bin, uint32_t width,
-                                              uint32_t height, uint32_t bins, Progress& progress) {
+UninitializedVector<uint32_t> bin_count_table(const std::vector<uint32_t>& texel_bin, uint32_t width, uint32_t height,
+                                              uint32_t bins, Progress& progress) {
   const size_t row_entries = (size_t(width) + 1) * bins;
   UninitializedVector<uint32_t> table(histogram_table_entries(width, height, bins));
   progress.start("histogram table", uint64_t(height) * 2);

@@ -19,7 +19,7 @@ std::vector<uint32_t> texel_bins(const NormalMap& map, const HistogramBins& bins
 
 // The table of a map whose texels are in bins `texel_bin` (row-major, W x H, each < bins):
 // [H + 1, W + 1, bins] u32 counts.
-UninitializedVector<uint32_t> bin_count_table(const std::vector<uint32_t>& texel_bin, uint32_t width,
-                                              uint32_t height, uint32_t bins, Progress& progress);
+UninitializedVector<uint32_t> bin_count_table(const std::vector<uint32_t>& texel_bin, uint32_t width, uint32_t height,
+                                              uint32_t bins, Progress& progress);
 
 }  // namespace mbk

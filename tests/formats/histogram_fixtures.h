@@ -15,8 +15,9 @@
 namespace mbk::test {
 
 struct HistogramFixture {
-  nlohmann::json parameters = {{"width", 3},  {"height", 2},        {"method", "exact"}, {"theta_bins", 2},
-                               {"phi_bins", 2}, {"theta_bins_requested", 9}, {"seed", 1}};
+  nlohmann::json parameters = {{"width", 3},      {"height", 2},   {"method", "exact"},
+                               {"theta_bins", 2}, {"phi_bins", 2}, {"theta_bins_requested", 9},
+                               {"seed", 1}};
   std::vector<double> theta_centres = {0.2, 0.5};
   std::vector<double> theta_edges = {0.0, 0.5 * (0.2 + 0.5), std::numbers::pi / 2};
   std::vector<double> phi_edges = {0.0, std::numbers::pi, 2.0 * std::numbers::pi};

@@ -27,8 +27,8 @@ NormalMap random_map(uint32_t w, uint32_t h, uint32_t seed) {
   NormalMap m{w, h, {}};
   for (uint32_t i = 0; i < w * h; ++i) {
     const double x = 1.6 * unit_from_hash(hash3(seed, i, 1)) - 0.8, y = 1.6 * unit_from_hash(hash3(seed, i, 2)) - 0.8;
-    m.texels.push_back(Vec3f(float(x), float(y), float(std::sqrt(std::max(0.0, 1.0 - x * x - y * y)) + 0.1))
-                           .normalized());
+    m.texels.push_back(
+        Vec3f(float(x), float(y), float(std::sqrt(std::max(0.0, 1.0 - x * x - y * y)) + 0.1)).normalized());
   }
   return m;
 }
@@ -56,8 +56,8 @@ void expect_footprints_match_brute_force(const NormalMap& map, uint32_t theta_bi
     int64_t x0, y0;
     uint64_t w, h;
   };
-  std::vector<Footprint> footprints = {{0, 0, W, H}, {int64_t(W) - 1, int64_t(H) - 1, 2, 2}, {-1, -1, 1, 1},
-                                       {0, 0, 2 * uint64_t(W) + 1, 1}};
+  std::vector<Footprint> footprints = {
+      {0, 0, W, H}, {int64_t(W) - 1, int64_t(H) - 1, 2, 2}, {-1, -1, 1, 1}, {0, 0, 2 * uint64_t(W) + 1, 1}};
   for (uint32_t k = 0; k < 1000; ++k) {
     auto u = [&](uint32_t salt) { return unit_from_hash(hash4(W, H, k, salt)); };
     const uint64_t limit_w = k % 10 == 0 ? 2 * W : W, limit_h = k % 10 == 0 ? 2 * H : H;
@@ -116,7 +116,8 @@ TEST(BinCountTable, GeneratedMapsMatchBruteForce) {
 TEST(BinCountTable, NormalExactlyOnAThetaEdgeIsCountedInTheBinAbove) {
   // Texel 0's theta is made an edge; texels 1 and 2 lie below and above it.
   const float t = 0.5f;
-  NormalMap map{3, 1, {Vec3f(std::sin(t), 0, std::cos(t)), Vec3f(0.1f, 0, 1).normalized(), Vec3f(1, 0, 0.2f).normalized()}};
+  NormalMap map{
+      3, 1, {Vec3f(std::sin(t), 0, std::cos(t)), Vec3f(0.1f, 0, 1).normalized(), Vec3f(1, 0, 0.2f).normalized()}};
   const Vec3f& n = map.texels[0];
   const double edge = histogram_theta(n.x(), n.y(), n.z());
   const HistogramBins bins{{0.0, edge, kHalfPi}, 4};

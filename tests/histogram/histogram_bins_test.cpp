@@ -52,7 +52,7 @@ TEST(HistogramBins, PhiAxesAndWrap) {
   EXPECT_EQ(histogram_phi_bin(0.0, -1.0, 32), 24u);
   EXPECT_EQ(histogram_phi_bin(1.0, -1e-300, 32), 31u);  // rounds to 2 pi: the last bin
   EXPECT_EQ(histogram_phi_bin(1.0, -1e-300, 1), 0u);
-  EXPECT_EQ(histogram_phi_bin(-1.0, 0.0, 2), 1u);     // pi: the edge of bin 1
+  EXPECT_EQ(histogram_phi_bin(-1.0, 0.0, 2), 1u);  // pi: the edge of bin 1
 }
 
 // phi in [0, 2 pi] as the bins define it, computed without the library.
