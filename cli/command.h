@@ -38,6 +38,7 @@ std::unique_ptr<Command> make_lut_command();
 std::unique_ptr<Command> make_rmq_command();
 std::unique_ptr<Command> make_sh_command();
 std::unique_ptr<Command> make_vmf_command();
+std::unique_ptr<Command> make_histogram_command();
 std::unique_ptr<Command> make_colormap_command();
 std::unique_ptr<Command> make_moments_command();
 std::unique_ptr<Command> make_crease_command();

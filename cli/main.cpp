@@ -51,6 +51,12 @@ std::vector<CommandEntry> command_table() {
        "Bake a normal map's vMF mixture MIP maps by spherical EM (asset kind vmf)",
        make_vmf_command,
        {"microbake vmf bumps.png --lobes 3 --tolerance 1e-4 -o bumps_vmf.mbk"}},
+      {"histogram",
+       "Bake a normal map's adaptive bins and per-bin integral images: the exact binned P-NDF of any footprint "
+       "(asset kind histogram; tables above 4 GiB are refused; --method neural is planned)",
+       make_histogram_command,
+       {"microbake histogram bumps.png -o bumps_histogram.mbk",
+        "microbake histogram bumps.png --theta-bins 6 --phi-bins 16 -o bumps_histogram.mbk"}},
       {"colormap",
        "Bake a colour map prefiltered with Gaussians, indexed by (mean, sigma) (asset kind colormap)",
        make_colormap_command,

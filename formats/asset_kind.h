@@ -53,5 +53,6 @@ AssetKind colormap_kind();
 AssetKind moments_kind();
 AssetKind crease_kind();
 AssetKind graph_kind();
+AssetKind histogram_kind();
 
 }  // namespace mbk

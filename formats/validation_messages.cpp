@@ -113,6 +113,14 @@ std::span<const MessageInfo> all_messages() {
       graph_bad_candidate,
       graph_bad_transfer,
       graph_bad_pca,
+      histogram_bad_parameters,
+      histogram_section_shape,
+      histogram_bad_theta_edges,
+      histogram_bad_theta_centres,
+      histogram_bad_phi_edges,
+      histogram_border_not_zero,
+      histogram_negative_count,
+      histogram_count_not_area,
   };
   return kAll;
 }

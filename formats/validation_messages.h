@@ -195,6 +195,26 @@ inline constexpr MessageInfo graph_bad_transfer{
     "graph: transfer offset not zero within one level of one exemplar or where there is no candidate"};
 inline constexpr MessageInfo graph_bad_pca{19006, Severity::error,
                                            "graph: synthesis PCA mean not finite or basis not orthonormal"};
+// 21xxx: kind 11, `histogram` (adaptive bins and integral images of per-bin counts: the exact binned P-NDF)
+inline constexpr MessageInfo histogram_bad_parameters{
+    21001, Severity::error,
+    "histogram: parameters missing or out of range (width, height, theta_bins, theta_bins_requested, phi_bins, "
+    "method)"};
+inline constexpr MessageInfo histogram_section_shape{21002, Severity::error,
+                                                     "histogram: section type or shape does not match the parameters"};
+inline constexpr MessageInfo histogram_bad_theta_edges{21003, Severity::error,
+                                                       "histogram: theta edges do not rise strictly from 0 to pi/2"};
+inline constexpr MessageInfo histogram_bad_theta_centres{
+    21004, Severity::error,
+    "histogram: a theta centre lies outside its bin, or an interior edge is not the midpoint of its two centres"};
+inline constexpr MessageInfo histogram_bad_phi_edges{21005, Severity::error,
+                                                     "histogram: phi edges are not the uniform 2 pi i / N"};
+inline constexpr MessageInfo histogram_border_not_zero{
+    21006, Severity::error, "histogram: the count table's first row or first column is not zero"};
+inline constexpr MessageInfo histogram_negative_count{
+    21007, Severity::error, "histogram: a footprint's corners give a negative count for a bin"};
+inline constexpr MessageInfo histogram_count_not_area{
+    21008, Severity::error, "histogram: a footprint's bin counts do not sum to its area in texels"};
 }  // namespace msg
 
 // All of the above, for documentation and the uniqueness test.

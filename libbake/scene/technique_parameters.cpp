@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "formats/colormap_layout.h"
+#include "formats/histogram_layout.h"
 #include "formats/lut_layout.h"
 #include "formats/rmq_layout.h"
 #include "libbake/core/sh_basis.h"
@@ -107,6 +108,15 @@ std::vector<TechniqueSchema> declare_schemas() {
       {"synth",
        {level, command_line_only(integer("seed", 0, kAnyUint32, 1, "Jitter hash seed")),
         command_line_only(integer("passes", 1, 8, 2, "Correction passes per level (4 sub-passes each)"))}},
+      {"histogram",
+       {command_line_only(choice("method", {"exact"}, "exact",
+                                 "How the binned P-NDF is stored: exact, integral images of per-bin counts ([GGN18]); "
+                                 "neural ([Shah24] Sec. 4.2) is planned and not accepted yet")),
+        command_line_only(integer("theta_bins", 1, kHistogramMaxThetaBins, kHistogramDefaultThetaBins,
+                                  "Adaptive theta bins requested, K (1-D k-means centres; fewer when the map has "
+                                  "fewer distinct theta values)")),
+        command_line_only(
+            integer("phi_bins", 1, kHistogramMaxPhiBins, kHistogramDefaultPhiBins, "Uniform phi bins, N"))}},
   };
 }
 
@@ -150,6 +160,10 @@ VmfBakeOptions vmf_bake_options(const nlohmann::json& parameters) {
   bake.em.tolerance = parameters.at("tolerance").get<double>();
   bake.em.max_iterations = parameters.at("max_iterations").get<int>();
   return bake;
+}
+
+HistogramBakeOptions histogram_bake_options(const nlohmann::json& parameters) {
+  return {parameters.at("theta_bins").get<uint32_t>(), parameters.at("phi_bins").get<uint32_t>()};
 }
 
 CreaseBakeOptions crease_bake_options(const nlohmann::json& parameters) {

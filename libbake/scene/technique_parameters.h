@@ -12,11 +12,12 @@
 #include "libbake/crease/crease_asset.h"
 #include "libbake/filter/sh_asset.h"
 #include "libbake/filter/vmf_pyramid.h"
+#include "libbake/histogram/histogram_bake.h"
 #include "libbake/scene/parameter_schema.h"
 
 namespace mbk {
 
-// mip, lut, rmq, sh, vmf, crease, colormap, moments, graph, synth.
+// mip, lut, rmq, sh, vmf, crease, colormap, moments, graph, synth, histogram.
 std::span<const TechniqueSchema> technique_schemas();
 // The schema of one technique; std::out_of_range for an unknown name (a programming error).
 const TechniqueSchema& technique_schema(std::string_view technique);
@@ -29,5 +30,6 @@ std::vector<Parameter> effect_parameters(std::string_view technique);
 ShBakeOptions sh_bake_options(const nlohmann::json& parameters);
 VmfBakeOptions vmf_bake_options(const nlohmann::json& parameters);
 CreaseBakeOptions crease_bake_options(const nlohmann::json& parameters);
+HistogramBakeOptions histogram_bake_options(const nlohmann::json& parameters);
 
 }  // namespace mbk

@@ -63,7 +63,7 @@ std::vector<std::string> examples(const std::string& help) {
 TEST(Help, EveryCommandsHelpIsPlainAndEndsWithExamples) {
   const mbk::test::ScratchDir dir;
   const std::vector<std::string> names = commands(dir.path());
-  ASSERT_EQ(names.size(), 17u);
+  ASSERT_EQ(names.size(), 18u);
   const std::regex internals(R"(ENUM|TEXT|FLOAT|UINT|\{[a-z0-9]+->|[0-9] - [0-9])");
   const std::regex doubled(R"(\b([A-Za-z]+) \1\b)");
   const std::regex positionals(R"(Usage: microbake [a-z]+ \[OPTIONS\]((?: \[?[A-Z]+(?:\.\.\.)?\]?)*)\n)");
@@ -97,9 +97,9 @@ TEST(Help, EveryExampleWorks) {
   // The exemplars examples/graphs/chain.json names.
   ASSERT_EQ(run("MICROBAKE=" + exe() + " bash examples/make_synth_exemplars.sh", dir.path()).exit_code, 0);
   // Each command after the ones that make its inputs.
-  const std::vector<std::string> order = {"gen",    "mip",      "lut",     "rmq",   "sh",      "vmf",
-                                          "crease", "colormap", "moments", "graph", "synth",   "bake",
-                                          "plan",   "render",   "compare", "info",  "validate"};
+  const std::vector<std::string> order = {"gen",       "mip",    "lut",      "rmq",     "sh",    "vmf",
+                                          "histogram", "crease", "colormap", "moments", "graph", "synth",
+                                          "bake",      "plan",   "render",   "compare", "info",  "validate"};
   const std::vector<std::string> names = commands(dir.path());
   EXPECT_EQ(std::set<std::string>(order.begin(), order.end()), std::set<std::string>(names.begin(), names.end()));
   for (const std::string& name : order)

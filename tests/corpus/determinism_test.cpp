@@ -72,6 +72,7 @@ TEST_F(Determinism, EveryCommandWritesTheSameBytesWhateverTheThreadCount) {
       {"lut", {"lut", "bumps.png", "-o", "OUT"}, ".mbk"},
       {"rmq", {"rmq", "bumps.png", "--patch", "4", "-o", "OUT"}, ".mbk"},
       {"moments", {"moments", "bumps.png", "-o", "OUT"}, ".mbk"},
+      {"histogram", {"histogram", "bumps.png", "-o", "OUT"}, ".mbk"},
       {"colormap", {"colormap", "cli_stripes.json", "--size", "32x16", "-o", "OUT"}, ".mbk"},
       {"crease", {"crease", "panels.png", "--curves", "panels.json", "-o", "OUT"}, ".mbk"},
       {"graph", {"graph", "graph.json", "-o", "OUT"}, ".mbk"},

@@ -60,6 +60,7 @@ class Corpus {
         {"lut", "bumps.png", "-q", "-o", "valid.lut.mbk"},
         {"rmq", "bumps.png", "--patch", "4", "-q", "-o", "valid.rmq.mbk"},
         {"moments", "bumps.png", "-q", "-o", "valid.moments.mbk"},
+        {"histogram", "bumps.png", "-q", "-o", "valid.histogram.mbk"},
         {"colormap", "stripes.json", "--size", "16x8", "-q", "-o", "valid.colormap.mbk"},
         {"crease", "panels.png", "--curves", "panels.json", "-q", "-o", "valid.crease.mbk"},
         {"graph", "graph.json", "-q", "-o", "valid.graph.mbk"},
@@ -93,7 +94,7 @@ const Corpus& corpus() {
 
 // --- assets --------------------------------------------------------------------------------------------------
 
-const char* const kKinds[] = {"mip", "sh", "vmf", "lut", "rmq", "moments", "colormap", "crease", "graph"};
+const char* const kKinds[] = {"mip", "sh", "vmf", "lut", "rmq", "moments", "colormap", "crease", "graph", "histogram"};
 
 // `f` with metadata parameters[key] set to `value`, resealed. The producer's name is shortened to make room, since
 // the metadata block cannot grow.

@@ -15,6 +15,7 @@
 #include "tests/formats/colormap_fixtures.h"
 #include "tests/formats/crease_fixtures.h"
 #include "tests/formats/graph_fixtures.h"
+#include "tests/formats/histogram_fixtures.h"
 #include "tests/formats/lut_fixtures.h"
 #include "tests/formats/moments_fixtures.h"
 #include "tests/formats/rmq_fixtures.h"
@@ -374,6 +375,28 @@ std::vector<CorruptCase> corrupt_cases() {
        [] { return test::graph_bytes([](test::GraphParts& p) { p.metadata.erase("superexemplar"); }); }},
       {"GraphGraphMembersMissing", 19001,
        [] { return test::graph_bytes([](test::GraphParts& p) { p.metadata.erase("graph"); }); }},
+      {"HistogramMethodNeural", 21001,
+       [] { return test::histogram_with([](test::HistogramFixture& f) { f.parameters["method"] = "neural"; }); }},
+      {"HistogramMoreBinsThanRequested", 21001,
+       [] {
+         return test::histogram_with([](test::HistogramFixture& f) { f.parameters["theta_bins_requested"] = 1; });
+       }},
+      {"HistogramShapeDisagreesWithWidth", 21002,
+       [] { return test::histogram_with([](test::HistogramFixture& f) { f.parameters["width"] = 4; }); }},
+      {"HistogramThetaEdgesEndBelowTheHorizon", 21003,
+       [] { return test::histogram_with([](test::HistogramFixture& f) { f.theta_edges[2] = 1.5; }); }},
+      {"HistogramThetaEdgeNotTheMidpoint", 21004,
+       [] { return test::histogram_with([](test::HistogramFixture& f) { f.theta_centres[0] = 0.3; }); }},
+      {"HistogramPhiEdgesNotUniform", 21005,
+       [] { return test::histogram_with([](test::HistogramFixture& f) { f.phi_edges[1] = 3.0; }); }},
+      {"HistogramFirstRowNotZero", 21006,
+       [] { return test::histogram_with([](test::HistogramFixture& f) { f.count(0, 1, 0) = 1; }); }},
+      // Texel (1, 0)'s footprint reads S(1, 2) - S(1, 1): bin 0 drops to -1.
+      {"HistogramNegativeCount", 21007,
+       [] { return test::histogram_with([](test::HistogramFixture& f) { f.count(1, 2, 0) = 0; }); }},
+      // Texel (0, 0)'s footprint counts bins 0 and 2: two texels in a one-texel footprint.
+      {"HistogramCountsNotTheArea", 21008,
+       [] { return test::histogram_with([](test::HistogramFixture& f) { f.count(1, 1, 2) = 1; }); }},
       {"CreaseZeroWidth", 16001,
        [] {
          return test::crease_bytes({}, {{"width", 0}, {"height", 2}});
