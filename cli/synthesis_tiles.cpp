@@ -20,8 +20,8 @@ std::vector<PlannedBake> plan_synthesis_tiles(const SynthesisTileRequest& reques
                 "the window would be " + std::to_string(columns) + " x " + std::to_string(rows) + " tiles; at most " +
                     std::to_string(kMaxPlannedTiles) + " (use a larger --tile)",
                 "--tile");
-  constexpr int64_t kMaxCoordinate = int64_t(1) << 62;  // synth's own limit (multiscale_synthesis.h)
-  if (window.x > kMaxCoordinate - int64_t(window.width) || window.y > kMaxCoordinate - int64_t(window.height))
+  if (window.x > kMaxSynthesisCoordinate - int64_t(window.width) ||
+      window.y > kMaxSynthesisCoordinate - int64_t(window.height))
     throw Error(ExitCode::bad_command_line, "the window must lie within +-2^62 pixels", "--window");
 
   AssetRecipe recipe;

@@ -448,7 +448,7 @@ Image synthesize_window(const GraphTables& graph, const SynthesisOptions& option
   if (uint64_t(options.width) * options.height > (uint64_t(1) << 24))
     throw Error(ExitCode::bad_command_line,
                 "the window may hold at most 2^24 pixels (4096 x 4096): synthesize it as tiles", "--window");
-  constexpr int64_t kMaxCoordinate = int64_t(1) << 62;  // regions grow by padding and halve: no overflow below this
+  constexpr int64_t kMaxCoordinate = kMaxSynthesisCoordinate;
   if (options.x < -kMaxCoordinate || options.y < -kMaxCoordinate || options.x > kMaxCoordinate - options.width ||
       options.y > kMaxCoordinate - options.height)
     throw Error(ExitCode::bad_command_line, "the window must lie within +-2^62 pixels", "--window");

@@ -48,6 +48,9 @@
 
 namespace mbk {
 
+// A window lies within +-kMaxSynthesisCoordinate pixels: regions grow by padding and halve, with no overflow below it.
+inline constexpr int64_t kMaxSynthesisCoordinate = int64_t(1) << 62;
+
 struct SynthesisOptions {
   uint32_t level = 0;              // T
   int64_t x = 0, y = 0;            // window origin at level T (pixels; may be negative)
