@@ -8,6 +8,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+# Leaks inside libraries, each with its reason; print_suppressions=0 keeps error output to its one line.
+export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan_suppressions.txt:print_suppressions=0"
 case "${1:-}" in
   --sanitize)
     BUILD_TYPE=RelWithDebInfo scripts/build.sh build-asan -DMICROBAKE_SANITIZE=ON

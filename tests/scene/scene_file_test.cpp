@@ -251,6 +251,34 @@ TEST(SceneFile, DuplicateKeysAreRefusedWithTheirJsonPath) {
   EXPECT_NO_THROW(parse_json_strict(R"({"a": {"k": 1}, "b": {"k": 1}, "c": [{"k": 1}, {"k": 1}]})", "s.json"));
 }
 
+TEST(SceneFile, NestingTooDeepIsRefusedWithThePathThroughArrays) {
+  // An object holding an array whose second element opens 63 nested arrays: the 65th container is refused. Every
+  // array on the way already holds the element being read; the innermost one does not yet.
+  const Error e = strict_parse_error(R"({"a": [0, )" + std::string(63, '['));
+  EXPECT_EQ(e.code(), ExitCode::invalid_input);
+  std::string where = "s.json: a[1]";
+  for (int i = 0; i < 62; ++i) where += "[0]";
+  EXPECT_EQ(e.where(), where);
+  EXPECT_NE(std::string(e.what()).find("nested more than 64 deep"), std::string::npos) << e.what();
+  // 64 deep (62 arrays, an object, an array) is accepted, and its value is where it was written.
+  const nlohmann::json ok =
+      parse_json_strict(std::string(62, '[') + R"({"k": [1, 2]})" + std::string(62, ']'), "s.json");
+  const nlohmann::json* inner = &ok;
+  for (int i = 0; i < 62; ++i) inner = &(*inner)[0];
+  EXPECT_EQ((*inner)["k"][1], 2);
+  EXPECT_THROW(parse_json_strict(std::string(62, '[') + R"({"k": [[2]]})" + std::string(62, ']'), "s.json"), Error);
+}
+
+TEST(SceneFile, ParsedDocumentsEqualTheLibrarysOwnParse) {
+  // The strict parser builds the same document as nlohmann's parser for every kind of value.
+  const std::string text =
+      R"({"n": null, "t": true, "f": false, "i": -3, "u": 18446744073709551615, "d": 2.5e-3, "s": "x\u00e9",
+          "e": {}, "ea": [], "a": [[], [1, [2, {"k": [3]}]], {"m": {"n": {}}}], "o": {"p": [null, "q"]}})";
+  EXPECT_EQ(parse_json_strict(text, "s.json"), nlohmann::json::parse(text));
+  EXPECT_EQ(parse_json_strict("7", "s.json"), 7);
+  EXPECT_EQ(parse_json_strict(R"("top")", "s.json"), "top");
+}
+
 TEST(SceneFile, DuplicateKeyInASceneFileNamesTheFileAndPath) {
   const test::ScratchDir dir;
   std::string text = full_scene().dump();
