@@ -6,7 +6,7 @@
 // independent assets side by side, sharing the --threads budget (the bytes do not depend on it). --keep-going bakes
 // everything it can and fails at the end; --prune removes the assets in the asset folders that no scene calls for.
 // The report (text, or JSON with --format json, printed also on failure) lists every asset with its status
-// (README "Bake report").
+// (docs/commands/bake.md "Bake report").
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -29,7 +29,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The report's format name and version (README "Bake report"); a change of its fields changes the version.
+// The report's format name and version (docs/commands/bake.md "Bake report"); a change of its fields changes the
+// version.
 constexpr const char* kReportSchema = "microbake-bake-report/1";
 
 struct AssetOutcome {

@@ -45,7 +45,7 @@ std::string make_recipe(const std::string& line) {
   return out;
 }
 
-const char* kHeader = "microbake plan (README \"Batch pipelines\"); paths are relative to the folder plan ran in";
+const char* kHeader = "microbake plan (docs/commands/plan.md); paths are relative to the folder plan ran in";
 
 }  // namespace
 

@@ -1,4 +1,4 @@
-// The files `microbake plan` writes (README "Batch pipelines"), each from the same list of planned bakes:
+// The files `microbake plan` writes (docs/commands/plan.md), each from the same list of planned bakes:
 //   ninja     build.ninja: one edge per asset (its input files as dependencies, restat), plus a generator edge that
 //             re-plans when a scene or any input changes, so a second `ninja` after an edit bakes only what changed
 //             (a changed input or parameter gives a new content-addressed name);

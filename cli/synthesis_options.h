@@ -13,7 +13,8 @@
 
 namespace mbk::cli {
 
-// The widest window side one `synth` command synthesizes (its pixel count has a limit of its own, README "synth").
+// The widest window side one `synth` command synthesizes (its pixel count has a limit of its own,
+// docs/commands/synth.md).
 inline constexpr uint64_t kMaxWindowSide = 65536;
 
 struct WindowOptions {

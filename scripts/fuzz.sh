@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fuzzes every parser (README "Fuzzing", docs/FUZZING.md): builds the libFuzzer targets of tests/fuzz/ once, in
+# Fuzzes every parser (docs/TESTING.md "Fuzzing", docs/FUZZING.md): builds the libFuzzer targets of tests/fuzz/ once, in
 # build-fuzz/ with clang 14 (MICROBAKE_FUZZ=ON: the libraries under test compiled with coverage feedback,
 # AddressSanitizer and UndefinedBehaviorSanitizer), then runs each target in turn with one job for SECONDS (default
 # 60), seeded from tests/fuzz/corpus/<name>/ (read only; inputs that add coverage go to build-fuzz/corpus/<name>/).

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The local simulation of a batch bake at scale (README "Baking a large library"; issue 14 part 5): a library of
+# The local simulation of a batch bake at scale (docs/commands/plan.md "Baking a large library"; issue 14 part 5): a library of
 # MAPS procedural maps (6 kinds x seeds, SIZE x SIZE), one scene per map whose materials call for 6 assets each (mip,
 # lut, rmq, sh order 4 and 6, vmf), planned once and baked three ways with two workers of one thread each:
 #   bake --jobs 2 --threads 2      one microbake process (the reference)

@@ -19,8 +19,8 @@
 // n_eff = (sum w)^2 / sum w^2, w = a^2 + b^2, counts the stencils the curl energy is spread over (n for an even
 // spread, 1 when one stencil carries it all). Neighbouring stencils share texels, so the spread is wider than
 // that; a reading is decided when |s| >= max(kConventionMinConfidence, kConventionNullSigmas / sqrt(n_eff))
-// (both constants measured on the generated kinds and on real maps: README "Green-channel convention"), else the
-// map is undecidable.
+// (both constants measured on the generated kinds and on real maps: docs/NORMAL_MAPS.md "Green-channel convention"),
+// else the map is undecidable.
 //
 // Stencils: every texel with a neighbour on each side, borders clamped, never wrapped (a map that does not tile
 // would add a seam of curl); maps narrower or shorter than 3 texels have none and are undecidable. Stencils

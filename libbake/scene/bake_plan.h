@@ -3,7 +3,7 @@
 // plain baseline the effects draw over (so that `render` needs no source map when everything is baked). Identical
 // requests are merged, so an asset shared by several materials is baked and loaded once.
 //
-// Asset file names are content-addressed (README "Asset file names"):
+// Asset file names are content-addressed (docs/commands/bake.md "Asset file names"):
 //   <first input's stem>.<kind>.<16 hex>.mbk
 // where the hex digits are the XXH3-64 of the canonical request text
 //   {"inputs":[{"content_hash":"xxh3:...","read_as":{...}}, ...],"kind":"mip","parameters":{...}}

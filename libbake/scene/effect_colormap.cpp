@@ -3,7 +3,7 @@
 //   colormap-height  C(f + h) of a Gaussian microsurface's heights h on top of the driver, with Smith
 //                    shadowing and the view/light-dependent height distribution (Sec. 5.1);
 //   colormap-slope   C(offset + d . s) of a Gaussian microsurface's slopes s seen from the viewer (Sec. 5.2).
-// They share their options (README "Scene files" documents them) and their
+// They share their options (docs/SCENES.md documents them) and their
 // assets: the prefiltered table of the colour map (kind `colormap`) and, when the driver is an image, its
 // moment pyramid (kind `moments`). None needs the normal map. Evaluator side: libbake/eval/colormap_effect.h.
 #include "formats/error.h"
@@ -45,7 +45,7 @@ std::vector<Parameter> noise_fields() {
           declare("seed", ParameterType::integer, 0, 4294967295.0, 1, "Lattice gradient seed")};
 }
 
-// The keys of each case (README "Effects colormap, colormap-height, colormap-slope").
+// The keys of each case (docs/SCENES.md "Effects colormap, colormap-height, colormap-slope").
 std::vector<Parameter> colormap_parameters(ColormapCase which) {
   std::vector<Parameter> p = {
       declare("colormap", ParameterType::file, 0, 0, nullptr, "The colour map: a gradient image or JSON stops"),

@@ -21,7 +21,7 @@ std::vector<Parameter> crease_parameters() {
   Parameter profile;
   profile.name = "profile";
   profile.type = ParameterType::object;
-  profile.doc = "A crease profile blended in by [Parilov05] Eq. (1) (README \"Effect crease\")";
+  profile.doc = "A crease profile blended in by [Parilov05] Eq. (1) (docs/SCENES.md \"Effect crease\")";
   std::vector<Parameter> parameters = effect_parameters("crease");
   parameters.insert(parameters.begin(), curves);
   parameters.push_back(profile);

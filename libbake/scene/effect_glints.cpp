@@ -2,7 +2,7 @@
 // non-repeating microstructure blended from the material's normal map (the example). Bakes the example's
 // standardization LUTs (asset kind `lut`), its RMQ table (asset kind `rmq`) and the map's `mip` asset, whose level 0
 // is the example the evaluator blends (so rendering reads no source map); its evaluator side is
-// libbake/eval/glints_effect.h. Keys (all optional; README "Effect glints"):
+// libbake/eval/glints_effect.h. Keys (all optional; docs/SCENES.md "Effect glints"):
 //   blending  "histogram"  none | linear | variance | histogram ([Wang20] Eqs. 4-6; none: one patch, for flakes)
 //   sigma_r   0.01         intrinsic roughness, in normal units
 //   patch     64           the rmq technique's --patch, at least 2 (target patches are half)

@@ -1,5 +1,5 @@
 // Scene files: the JSON a user writes to describe what `render` draws and what `bake` prepares.
-// Top-level keys: camera, shapes, materials, lights (README "Scene files" documents every key, its unit
+// Top-level keys: camera, shapes, materials, lights (docs/SCENES.md documents every key, its unit
 // and its default). Reading is strict: an unknown key anywhere, a wrong type or an out-of-range value is an
 // Error(invalid_input) naming its JSON path (e.g. "materials.brick.rougness"). Paths inside the scene
 // (normal maps, environment maps) are relative to the scene file's folder.

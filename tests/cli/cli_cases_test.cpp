@@ -11,8 +11,6 @@
 // commands at the top of the file run once, before the cases.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -20,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tests/cli/shell_run.h"
 #include "tests/scratch_dir.h"
 
 namespace {
@@ -42,26 +41,10 @@ std::string expand(std::string s) {
   return s;
 }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using mbk::test::ShellRun;
+using mbk::test::slurp;
 
-struct ShellRun {
-  int exit_code;
-  std::string out, err;
-};
-
-ShellRun run_shell(const std::string& command) {
-  const fs::path out = scratch_dir() / ".stdout", err = scratch_dir() / ".stderr";
-  const std::string full = "cd '" + scratch_dir().string() + "' && ( " + command + " ) </dev/null >'" + out.string() +
-                           "' 2>'" + err.string() + "'";
-  int status = std::system(full.c_str());
-  ShellRun r{WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), slurp(out), slurp(err)};
-  return r;
-}
+ShellRun run_shell(const std::string& command) { return mbk::test::run_shell(command, scratch_dir()); }
 
 json load_cases_file() { return json::parse(slurp(kCasesFile)); }
 

@@ -4,48 +4,27 @@
 // examples run, in a scratch folder beside a copy of examples/, in the order that makes each one's inputs.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
 
+#include "tests/cli/shell_run.h"
 #include "tests/scratch_dir.h"
 
 namespace {
 namespace fs = std::filesystem;
 
-struct ShellRun {
-  int exit_code;
-  std::string out, err;
-};
+using mbk::test::ShellRun;
 
-ShellRun run(const std::string& command, const fs::path& folder) {
-  const fs::path out = folder / ".help_out", err = folder / ".help_err";
-  const std::string full =
-      "cd '" + folder.string() + "' && ( " + command + " ) </dev/null >'" + out.string() + "' 2>'" + err.string() + "'";
-  const int status = std::system(full.c_str());
-  auto slurp = [](const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-  };
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
-}
+ShellRun run(const std::string& command, const fs::path& folder) { return mbk::test::run_shell(command, folder); }
 
 std::string exe() { return MICROBAKE_EXE; }
 
-// The command names `microbake help` lists under "Commands:".
 std::vector<std::string> commands(const fs::path& folder) {
-  const ShellRun r = run(exe() + " help", folder);
-  EXPECT_EQ(r.exit_code, 0) << r.err;
-  std::vector<std::string> names;
-  std::istringstream in(r.out.substr(r.out.find("Commands:\n") + 10));
-  for (std::string line; std::getline(in, line) && line.rfind("  ", 0) == 0;)
-    names.push_back(line.substr(2, line.find(' ', 2) - 2));
+  const std::vector<std::string> names = mbk::test::microbake_commands(exe(), folder);
+  EXPECT_FALSE(names.empty()) << "microbake help lists no command";
   return names;
 }
 

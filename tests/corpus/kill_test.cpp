@@ -131,8 +131,9 @@ TEST_F(KillTest, RacingWritersLeaveOneCompleteFile) {
   }
 }
 
-// The shared-folder case of a cluster (README "Baking a large library"): two `bake`s of one scene into one asset
-// folder at once both succeed, and leave exactly the files a bake alone writes, byte for byte, with no temporary.
+// The shared-folder case of a cluster (docs/commands/plan.md "Baking a large library"): two `bake`s of one scene into
+// one asset folder at once both succeed, and leave exactly the files a bake alone writes, byte for byte, with no
+// temporary.
 TEST_F(KillTest, RacingBakesOfOneSceneLeaveTheFilesOneBakeWrites) {
   std::ofstream(dir_.path() / "race.json")
       << R"({"camera": {"position": [0, 1.5, 3], "look_at": [0, 0, 0], "fov_y": 45, "width": 8, "height": 6},

@@ -2,9 +2,9 @@
 // effect reads exactly its declared keys, with the declared defaults and ranges (the edges accepted, one step beyond
 // refused at the key's JSON path); an effect key taken from a technique stays inside the technique's range; every
 // technique parameter with an option is that command's option in `microbake <technique> --help` with the same values
-// and default, refused one step beyond its range by the real command; the README's option table of the command
-// lists it with the same default; and the README's scene-file tables list every effect key (and the keys of an object
-// key with declared fields) with the same default. A drift in any of them fails here.
+// and default, refused one step beyond its range by the real command; the option table of the command's page
+// (docs/commands/<command>.md) lists it with the same default; and the tables of docs/SCENES.md list every effect key
+// (and the keys of an object key with declared fields) with the same default. A drift in any of them fails here.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -221,14 +221,12 @@ TEST(ParameterSchema, EveryTechniqueParameterIsItsCommandsOptionWithTheSameValue
   }
 }
 
-// The rows "| `--option ...` | default | meaning |" of README.md's section on `microbake <command>`.
-std::map<std::string, std::string> readme_option_defaults(const std::string& command) {
-  std::ifstream in(std::string(MICROBAKE_SOURCE_DIR) + "/README.md");
+// The rows "| `--option ...` | default | meaning |" of the command's page, docs/commands/<command>.md.
+std::map<std::string, std::string> page_option_defaults(const std::string& command) {
+  std::ifstream in(std::string(MICROBAKE_SOURCE_DIR) + "/docs/commands/" + command + ".md");
   std::map<std::string, std::string> rows;
-  bool inside = false;
   for (std::string line; std::getline(in, line);) {
-    if (line.rfind("### ", 0) == 0) inside = line.rfind("### `microbake " + command + "`", 0) == 0;
-    if (!inside || line.rfind("| `--", 0) != 0) continue;
+    if (line.rfind("| `--", 0) != 0) continue;
     const size_t name_end = line.find_first_of(" `", 3);
     auto separator = [&](size_t from) {  // the next '|' that is not an escaped "\|"
       size_t at = line.find('|', from);
@@ -239,18 +237,19 @@ std::map<std::string, std::string> readme_option_defaults(const std::string& com
     const size_t cell_end = separator(cell + 1);
     std::string fallback = line.substr(cell + 1, cell_end - cell - 1);
     fallback.erase(std::remove(fallback.begin(), fallback.end(), '`'), fallback.end());
-    rows[line.substr(3, name_end - 3)] = fallback.substr(fallback.find_first_not_of(' '));
+    const size_t text = fallback.find_first_not_of(' ');
+    rows[line.substr(3, name_end - 3)] = text == std::string::npos ? "" : fallback.substr(text);
   }
   return rows;
 }
 
-TEST(ParameterSchema, TheReadmeTableOfEachCommandListsItsOptionsWithTheirDefaults) {
+TEST(ParameterSchema, TheOptionTableOfEachCommandsPageListsItsOptionsWithTheirDefaults) {
   for (const TechniqueSchema& t : technique_schemas()) {
-    const auto rows = readme_option_defaults(t.technique);
+    const auto rows = page_option_defaults(t.technique);
     for (const Parameter& p : t.parameters) {
       if (p.option.empty()) continue;
       const std::string what = t.technique + " " + p.option;
-      ASSERT_TRUE(rows.count(p.option)) << what << " is not in README.md's table of `microbake " << t.technique << "`";
+      ASSERT_TRUE(rows.count(p.option)) << what << " is not in the table of docs/commands/" << t.technique << ".md";
       const std::string& cell = rows.at(p.option);
       if (p.required) {
         EXPECT_EQ(cell.rfind("(required)", 0), 0u) << what << ": " << cell;
@@ -263,31 +262,29 @@ TEST(ParameterSchema, TheReadmeTableOfEachCommandListsItsOptionsWithTheirDefault
   }
 }
 
-// A table row of README.md's "Scene files" chapter in a table whose last column is "default": its cells (trimmed),
-// and the "####" heading above it.
-struct ReadmeRow {
+// A table row of docs/SCENES.md in a table whose last column is "default": its cells (trimmed), and the "###"
+// heading above it.
+struct SceneDocRow {
   std::vector<std::string> cells;
   std::string heading;
   bool has_default = false;  // its table's last column is "default"
 };
 
-std::vector<ReadmeRow> readme_scene_rows() {
-  std::ifstream in(std::string(MICROBAKE_SOURCE_DIR) + "/README.md");
-  std::vector<ReadmeRow> rows;
-  bool inside = false, in_default_table = false;
+std::vector<SceneDocRow> scene_doc_rows() {
+  std::ifstream in(std::string(MICROBAKE_SOURCE_DIR) + "/docs/SCENES.md");
+  std::vector<SceneDocRow> rows;
+  bool in_default_table = false;
   std::string heading;
   for (std::string line; std::getline(in, line);) {
-    if (line.rfind("## ", 0) == 0) inside = line == "## Scene files";
     if (line.empty()) in_default_table = false;
-    if (line.rfind("#### ", 0) == 0) heading = line;
-    if (!inside) continue;
+    if (line.rfind("### ", 0) == 0) heading = line;
     if (line.rfind("|---", 0) == 0 && !rows.empty()) {  // the row above was the header: keep tables with defaults
       in_default_table = rows.back().cells.back() == "default";
       rows.pop_back();
       continue;
     }
     if (line.rfind("| ", 0) != 0) continue;
-    ReadmeRow row{{}, heading, in_default_table};
+    SceneDocRow row{{}, heading, in_default_table};
     size_t from = 1;
     for (size_t at = from; (at = line.find('|', at)) != std::string::npos; ++at) {
       if (line[at - 1] == '\\') continue;  // an escaped "\|" inside a cell
@@ -299,8 +296,8 @@ std::vector<ReadmeRow> readme_scene_rows() {
     }
     rows.push_back(row);
   }
-  std::vector<ReadmeRow> kept;
-  std::copy_if(rows.begin(), rows.end(), std::back_inserter(kept), [](const ReadmeRow& r) { return r.has_default; });
+  std::vector<SceneDocRow> kept;
+  std::copy_if(rows.begin(), rows.end(), std::back_inserter(kept), [](const SceneDocRow& r) { return r.has_default; });
   return kept;
 }
 
@@ -316,13 +313,13 @@ std::string cell_part(const std::string& cell, size_t index, size_t parts) {
   return text;
 }
 
-// The README row of key `key` about effect `effect`: a row with a cell listing `key`, and either a cell naming the
-// effect or "all", or no such cell and the effect in the heading above it. Sets `index`/`parts` to the key's place in
-// its cell; nullptr when there is none.
-const ReadmeRow* readme_row(const std::vector<ReadmeRow>& rows, const std::string& effect, const std::string& key,
-                            size_t& index, size_t& parts) {
+// The docs/SCENES.md row of key `key` about effect `effect`: a row with a cell listing `key`, and either a cell naming
+// the effect or "all", or no such cell and the effect in the heading above it. Sets `index`/`parts` to the key's place
+// in its cell; nullptr when there is none.
+const SceneDocRow* scene_doc_row(const std::vector<SceneDocRow>& rows, const std::string& effect,
+                                 const std::string& key, size_t& index, size_t& parts) {
   const std::string quoted_effect = "`" + effect + "`";
-  for (const ReadmeRow& row : rows) {
+  for (const SceneDocRow& row : rows) {
     for (size_t c = 0; c < row.cells.size(); ++c) {
       const std::string& cell = row.cells[c];
       std::vector<std::string> keys;
@@ -353,8 +350,8 @@ const ReadmeRow* readme_row(const std::vector<ReadmeRow>& rows, const std::strin
   return nullptr;
 }
 
-// A declared default as the README's default cell must spell it.
-void expect_readme_default(const Parameter& p, const std::string& cell, const std::string& what) {
+// A declared default as a documented default cell must spell it.
+void expect_documented_default(const Parameter& p, const std::string& cell, const std::string& what) {
   if (p.required || (p.type == ParameterType::file && p.name != "driver")) {
     EXPECT_EQ(cell.rfind("required", 0), 0u) << what << ": " << cell;
   } else if (p.type == ParameterType::object && !p.fields.empty()) {
@@ -370,17 +367,17 @@ void expect_readme_default(const Parameter& p, const std::string& cell, const st
   }
 }
 
-TEST(ParameterSchema, TheReadmeListsEveryEffectKeyWithItsDefault) {
-  const std::vector<ReadmeRow> rows = readme_scene_rows();
+TEST(ParameterSchema, TheScenePageListsEveryEffectKeyWithItsDefault) {
+  const std::vector<SceneDocRow> rows = scene_doc_rows();
   ASSERT_FALSE(rows.empty());
   size_t checked = 0;
   for (const EffectInfo& e : effect_registry()) {
     for (const Parameter& p : e.parameters) {
       const std::string what = "effect " + e.name + " key " + p.name;
       size_t index = 0, parts = 1;
-      const ReadmeRow* row = readme_row(rows, e.name, p.name, index, parts);
-      ASSERT_NE(row, nullptr) << what << " is not in a table of README.md's \"Scene files\"";
-      expect_readme_default(p, cell_part(row->cells.back(), index, parts), what);
+      const SceneDocRow* row = scene_doc_row(rows, e.name, p.name, index, parts);
+      ASSERT_NE(row, nullptr) << what << " is not in a table of docs/SCENES.md";
+      expect_documented_default(p, cell_part(row->cells.back(), index, parts), what);
       ++checked;
     }
   }
