@@ -27,9 +27,10 @@
 // hold n_i + J_i (u - u_i) there, and K (u - c) over that square is an interval per component.
 // A renderer that shades a pixel once with a Gaussian footprint also cuts the pixel into sub-pixel cells, each its
 // own footprint and half vector (pixel_sweep.h: a Gaussian is not the pixel's box).
-// Measured (examples/results/glint/REPORT.md): the pixel's sweep taken independent of position (every texel
-// tested against every half vector of the pixel: cells of the sweep box plus a residual covariance on the
-// normals, the previous form) drew more, dimmer, sideways-smeared sparkles in the far field than the reference.
+// Measured against sub-pixel point NDFs through the same microstructure (test:
+// GlintPndf.SlopeFieldFollowsTheMeanOfPointNdfsOverTheFootprint): relative L1 0.03-0.04 with the field, 0.33 with
+// the sweep taken independent of position (every texel tested against every half vector of the pixel: the
+// previous form, cells of the sweep box plus a residual covariance on the normals).
 // Normalisation: D_P(s) = sum k(s) / sum m over the footprint's sub-elements, i.e. the untruncated D_P would
 // integrate to exactly 1 over s; the normal truncation removes the mass beyond 4 sigma per component (< 1e-4).
 //

@@ -68,7 +68,7 @@ TEST(PixelSweep, CellCountsAndLimits) {
   const double sigma_r = 0.01;
   Mat2 steps = Mat2::Zero();
   EXPECT_EQ(pixel_sweep_cells(steps, sigma_r), (std::array<int, 2>{1, 1}));  // no sweep: one cell
-  steps.col(0) = Vec2(0.05, 0.0);                                             // 5 sigma_r: 3 cells of 1.67 sigma_r
+  steps.col(0) = Vec2(0.05, 0.0);                                            // 5 sigma_r: 3 cells of 1.67 sigma_r
   EXPECT_EQ(pixel_sweep_cells(steps, sigma_r), (std::array<int, 2>{3, 1}));
   steps.col(1) = Vec2(0.0, 1.0);  // 100 sigma_r: capped at 8 cells
   EXPECT_EQ(pixel_sweep_cells(steps, sigma_r), (std::array<int, 2>{3, 8}));
