@@ -2,11 +2,14 @@
 #include "cli/baking_command.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
 
 #include "cli/stage_timer.h"
+#include "formats/asset.h"
+#include "formats/atomic_file.h"
 #include "formats/error.h"
 #include "formats/file_extension.h"
 #include "libbake/scene/technique_parameters.h"
@@ -20,6 +23,7 @@ void BakingCommand::add_options(CLI::App& app) {
   add_inputs(app);
   add_output_option(app, output_, output_what_);
   schema_options_.add(app, technique_schema(technique_));
+  add_format_option(app, format_);
   add_run_options(app, run_);
 }
 
@@ -39,6 +43,10 @@ void BakingCommand::check() {
 
 void BakingCommand::write(const OutputOption& output) const { output.write_asset(*asset_); }
 
+nlohmann::json BakingCommand::statistics() const {
+  return Asset::parse_structure(read_file_bytes(output_.path), output_.path).metadata().at("statistics");
+}
+
 int BakingCommand::run() {
   run_.apply();
   Progress progress(run_.progress_mode());
@@ -49,7 +57,20 @@ int BakingCommand::run() {
   const double bake_seconds = timer.lap();
   write(output_);
   const double write_seconds = timer.lap();
-  if (!run_.quiet) {
+  if (format_ == OutputFormat::json) {
+    nlohmann::json report = {{"schema", "microbake.baker/1"},
+                             {"technique", technique_},
+                             {"output", output_.path},
+                             {"output_bytes", std::filesystem::file_size(output_.path)},
+                             {"summary", summary()},
+                             {"repaired_texels", repaired_texels()},
+                             {"parameters", parameters_},
+                             {"bake_stage", bake_stage()},
+                             {"seconds", {{"load", load_seconds}, {"bake", bake_seconds}, {"write", write_seconds}}}};
+    asset_.reset();  // statistics() reads the file back: its bytes are then in memory once, as while baking
+    report["statistics"] = statistics();
+    std::cout << report.dump(2) << "\n";
+  } else if (!run_.quiet) {
     std::ostringstream line;
     line << technique_ << ": wrote " << output_.path << " (" << summary();
     if (const uint64_t repaired = repaired_texels())

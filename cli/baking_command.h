@@ -1,7 +1,9 @@
 // The skeleton every baking command shares, written once: the positional INPUT, -o/--output, the technique's options
 // generated from its schema (libbake/scene/technique_parameters.h), the run options; then run() loads, bakes and
 // writes (atomically), timing each stage, and prints one summary line
-//   "<technique>: wrote <output> (<what was baked>[; N invalid texels repaired]); load L s, bake B s, write W s".
+//   "<technique>: wrote <output> (<what was baked>[; N invalid texels repaired]); load L s, bake B s, write W s",
+// or with --format json one object of schema "microbake.baker/1" (formats/schema/baker.schema.json): the same facts
+// plus the parameters, the stage times and the bake's statistics.
 // A technique supplies only its parts: its inputs, how it loads and bakes, and what its summary says.
 // NormalMapBakingCommand is the skeleton of the techniques that bake a normal map (mip, lut, rmq, sh, vmf, crease).
 #pragma once
@@ -42,6 +44,9 @@ class BakingCommand : public Command {
   // What the summary line calls the bake stage ("bake"; graph: "analysis"), and any rate printed after its time.
   virtual std::string bake_stage() const { return "bake"; }
   virtual std::string bake_rate(double /*seconds*/) const { return ""; }
+  // The statistics of the JSON report; the default is the written asset's metadata "statistics" (formats/SPEC.md),
+  // read back from the file (whose structure and checksums are checked on the way).
+  virtual nlohmann::json statistics() const;
   // The output's allowed extensions (lower case); the default is an asset.
   virtual std::vector<std::string> output_extensions() const { return {".mbk"}; }
 
@@ -58,6 +63,7 @@ class BakingCommand : public Command {
   nlohmann::json parameters_;
   OutputOption output_;
   RunOptions run_;
+  OutputFormat format_ = OutputFormat::text;
 };
 
 class NormalMapBakingCommand : public BakingCommand {

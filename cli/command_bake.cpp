@@ -29,9 +29,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The report's format name and version (docs/commands/bake.md "Bake report"); a change of its fields changes the
-// version.
-constexpr const char* kReportSchema = "microbake-bake-report/1";
+// The report's format name and version (docs/commands/bake.md "Bake report", formats/schema/bake.schema.json); a
+// change of its fields changes the version.
+constexpr const char* kReportSchema = "microbake.bake/1";
 
 struct AssetOutcome {
   std::string status;  // baked | skipped | failed | pending (--dry-run: would be baked); queued while baking

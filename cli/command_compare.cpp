@@ -1,7 +1,7 @@
 // `microbake compare IMAGE REFERENCE [--format text|json] [--max-rmse X] [--block N]`: error metrics of IMAGE against
 // the REFERENCE (libbake/eval/image_difference.h: RMSE, relative MSE, PSNR with peak 1, relative L1 of block means).
-// Exit 6 when
-// --max-rmse is given and the RMSE is above it; images of different sizes are invalid input (3).
+// Exit 6 when --max-rmse is given and the RMSE is above it; images of different sizes are invalid input (3).
+// --format json adds the load and comparison times (schema "microbake.compare/1", formats/schema/compare.schema.json).
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -10,6 +10,7 @@
 #include "cli/command.h"
 #include "cli/common_options.h"
 #include "cli/parameter_options.h"
+#include "cli/stage_timer.h"
 #include "formats/error.h"
 #include "libbake/eval/image_difference.h"
 #include "libbake/image/image_io.h"
@@ -41,8 +42,10 @@ class CompareCommand : public Command {
     // Sizes come from the headers first, so that a file declaring a huge image is refused before it is decoded.
     for (const std::string& path : {options_.a, options_.b})
       (void)read_image_header_within(path, kMaxNormalMapSide, "image");
+    StageTimer timer;
     ImageFileInfo info_a, info_b;
     const Image a = load_image(options_.a, &info_a), b = load_image(options_.b, &info_b);
+    const double load_seconds = timer.lap();
     // An integer file (PNG) holds display-encoded values, a float file (EXR) linear radiance: their
     // difference would measure the tone curve, not the rendering.
     if (info_a.is_float != info_b.is_float)
@@ -56,9 +59,11 @@ class CompareCommand : public Command {
     } catch (const Error& e) {
       throw Error(e.code(), e.what(), options_.a + " vs " + options_.b + (e.where().empty() ? "" : ", " + e.where()));
     }
+    const double compare_seconds = timer.lap();
     const bool above = options_.max_rmse && d.rmse > *options_.max_rmse;
     if (options_.format == OutputFormat::json) {
-      nlohmann::json j = {{"a", options_.a},
+      nlohmann::json j = {{"schema", "microbake.compare/1"},
+                          {"a", options_.a},
                           {"b", options_.b},
                           {"width", a.width},
                           {"height", a.height},
@@ -73,7 +78,8 @@ class CompareCommand : public Command {
                           {"block_relative_l1",
                            std::isfinite(d.block_relative_l1) ? nlohmann::json(d.block_relative_l1) : nlohmann::json()},
                           {"max_rmse", options_.max_rmse ? nlohmann::json(*options_.max_rmse) : nlohmann::json()},
-                          {"within_threshold", !above}};
+                          {"within_threshold", !above},
+                          {"seconds", {{"load", load_seconds}, {"compare", compare_seconds}}}};
       std::cout << j.dump(2) << "\n";
     } else {
       std::printf("A: %s\nB: %s (reference)\nsize: %ux%u, %u channels\n", options_.a.c_str(), options_.b.c_str(),

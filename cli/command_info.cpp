@@ -1,6 +1,7 @@
 // `microbake info FILE [--format text|json]`: an asset's header, metadata (producer, inputs, parameters,
 // conventions, statistics) and sections with type, shape, bytes and checksum status. A structurally broken
-// file is an error (exit 3); a section whose checksum fails is listed as such, then exit 3.
+// file is an error (exit 3); a section whose checksum fails is listed as such, then exit 3. --format json prints
+// the same as one object (schema "microbake.info/1", formats/schema/info.schema.json).
 #include <cstdio>
 #include <iostream>
 
@@ -59,6 +60,7 @@ class InfoCommand : public Command {
     }
     if (options_.format == OutputFormat::json) {
       nlohmann::json j;
+      j["schema"] = "microbake.info/1";
       j["file"] = options_.file;
       j["file_size"] = bytes.size();
       j["format_version"] = std::to_string(p.header.major) + "." + std::to_string(p.header.minor);

@@ -1,13 +1,15 @@
 // `microbake render SCENE -o OUT.{exr,png} [--spp N] [--max-probes N] [--reference N] [--seed S] [--assets DIR]`:
 // the reference shader evaluator (libbake/eval/renderer.h). EXR output is linear radiance, PNG is tone-mapped for
 // viewing (libbake/eval/render_output.h). Effects read their baked assets from the asset folder (default
-// <scene folder>/<scene stem>.assets, as `bake` writes it); --reference needs no assets.
-#include <chrono>
+// <scene folder>/<scene stem>.assets, as `bake` writes it); --reference needs no assets. Prints one line, or with
+// --format json one object with the stage times (schema "microbake.render/1", formats/schema/render.schema.json).
 #include <cstdio>
+#include <iostream>
 
 #include "cli/command.h"
 #include "cli/common_options.h"
 #include "cli/parameter_options.h"
+#include "cli/stage_timer.h"
 #include "formats/error.h"
 #include "libbake/eval/render_output.h"
 #include "libbake/eval/renderer.h"
@@ -41,6 +43,7 @@ class RenderCommand : public Command {
     app.add_option("--assets", options_.assets,
                    "Folder of baked assets (default: <scene folder>/<scene stem>.assets, as 'bake' writes)")
         ->type_name("DIR");
+    add_format_option(app, options_.format);
     add_run_options(app, options_.run);
   }
 
@@ -56,7 +59,7 @@ class RenderCommand : public Command {
   int run() override {
     options_.run.apply();
     Progress progress(options_.run.progress_mode());
-    const auto start = std::chrono::steady_clock::now();
+    StageTimer timer;
     const Scene scene = load_scene(options_.scene);
     RenderSettings settings;
     settings.spp = options_.spp;
@@ -66,15 +69,33 @@ class RenderCommand : public Command {
     settings.asset_folder =
         options_.assets.empty() ? default_asset_folder(scene) : std::filesystem::path(options_.assets);
     const RenderInputs inputs = load_render_inputs(scene, settings);
+    const double load_seconds = timer.lap();
     const Image image = render_scene(scene, inputs, settings, progress);
+    const double render_seconds = timer.lap();
     options_.output.write_with(
         [&](const std::filesystem::path& temporary) { save_render(temporary, image, options_.output.path); });
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (!options_.run.quiet) {
-      const uint32_t samples = settings.reference > 0 ? settings.reference * settings.reference : settings.spp;
+    const double write_seconds = timer.lap();
+    const uint32_t samples = settings.reference > 0 ? settings.reference * settings.reference : settings.spp;
+    const char* mode = settings.reference > 0 ? "reference" : "effects";
+    if (options_.format == OutputFormat::json) {
+      const nlohmann::json report = {
+          {"schema", "microbake.render/1"},
+          {"scene", options_.scene},
+          {"output", options_.output.path},
+          {"output_bytes", std::filesystem::file_size(options_.output.path)},
+          {"width", image.width},
+          {"height", image.height},
+          {"mode", mode},
+          {"samples_per_pixel", samples},
+          {"seed", settings.seed},
+          {"max_probes", settings.max_probes},
+          {"asset_folder", settings.reference > 0 ? nlohmann::json() : nlohmann::json(settings.asset_folder.string())},
+          {"seconds", {{"load", load_seconds}, {"render", render_seconds}, {"write", write_seconds}}}};
+      std::cout << report.dump(2) << "\n";
+    } else if (!options_.run.quiet) {
       std::printf("rendered %s: %ux%u, %s, %u sample%s per pixel, %.2f s\n", options_.output.path.c_str(), image.width,
                   image.height, settings.reference > 0 ? "reference (unfiltered normals)" : "effects", samples,
-                  samples == 1 ? "" : "s", seconds);
+                  samples == 1 ? "" : "s", load_seconds + render_seconds + write_seconds);
     }
     return 0;
   }
@@ -88,6 +109,7 @@ class RenderCommand : public Command {
     int max_probes = UvFootprint{}.max_probes;
     uint32_t seed = 0;
     std::string assets;
+    OutputFormat format = OutputFormat::text;
     RunOptions run;
   } options_;
   CLI::Option* spp_option_ = nullptr;

@@ -65,6 +65,15 @@ class SynthCommand : public BakingCommand {
     return s.str();
   }
 
+  // The output is an image, not an asset: its statistics are the window's (level and seed are parameters).
+  nlohmann::json statistics() const override {
+    return {{"width", window_image_.width},
+            {"height", window_image_.height},
+            {"channels", window_image_.channels},
+            {"x", synthesis_.x},
+            {"y", synthesis_.y}};
+  }
+
   std::string summary() const override {
     return std::to_string(window_image_.width) + "x" + std::to_string(window_image_.height) + " at level " +
            std::to_string(synthesis_.level) + ", origin " + std::to_string(synthesis_.x) + "," +

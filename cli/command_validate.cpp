@@ -1,7 +1,8 @@
 // `microbake validate FILE... [--format text|json] [--warnings-as-errors]`: structure, checksums and each
 // kind's invariants. Findings carry stable ids (formats/validation_messages.h). Exit 0 when every file is
 // valid; otherwise the code of the first failing file: 2 unreadable (finding 1006, and an error line on
-// stderr), 5 newer major version, 3 invalid.
+// stderr), 5 newer major version, 3 invalid. --format json prints one result per file, valid files included
+// (schema "microbake.validate/1", formats/schema/validate.schema.json).
 #include <iostream>
 
 #include "cli/command.h"
@@ -23,7 +24,7 @@ class ValidateCommand : public Command {
 
   int run() override {
     int exit_code = 0;
-    nlohmann::json messages = nlohmann::json::array();
+    nlohmann::json results = nlohmann::json::array();
     for (const std::string& file : options_.files) {
       std::vector<Finding> findings;
       int file_code = 0;
@@ -38,12 +39,11 @@ class ValidateCommand : public Command {
       if (const Finding* f = first_error(findings, options_.warnings_as_errors); file_code == 0 && f)
         file_code = static_cast<int>(exit_code_for(*f));
       if (exit_code == 0) exit_code = file_code;
-      for (const Finding& f : findings) {
-        nlohmann::json details = f.details;
-        details["file"] = file;
+      nlohmann::json messages = nlohmann::json::array();
+      for (const Finding& f : findings)
         messages.push_back(
-            {{"id", f.id}, {"severity", severity_name(f.severity)}, {"message", f.message}, {"details", details}});
-      }
+            {{"id", f.id}, {"severity", severity_name(f.severity)}, {"message", f.message}, {"details", f.details}});
+      results.push_back({{"file", file}, {"valid", file_code == 0}, {"exit_code", file_code}, {"messages", messages}});
       if (options_.format == OutputFormat::text && file_code != static_cast<int>(ExitCode::io_failure)) {
         std::cout << file << ": " << (file_code == 0 ? "valid" : "INVALID") << "\n";
         for (const Finding& f : findings)
@@ -51,7 +51,9 @@ class ValidateCommand : public Command {
       }
     }
     if (options_.format == OutputFormat::json)
-      std::cout << nlohmann::json{{"valid", exit_code == 0}, {"messages", messages}}.dump(2) << "\n";
+      std::cout
+          << nlohmann::json{{"schema", "microbake.validate/1"}, {"valid", exit_code == 0}, {"files", results}}.dump(2)
+          << "\n";
     return exit_code;
   }
 

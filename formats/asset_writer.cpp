@@ -71,29 +71,22 @@ AssetWriter::Layout AssetWriter::layout() const {
   l.file_size = sections_.empty() ? table_offset + table_size : offsets.back() + sections_.back().bytes.size();
   l.head.assign(sections_.empty() ? l.file_size : offsets.front(), 0);
   std::vector<uint8_t>& out = l.head;
-  std::copy(kMagic.begin(), kMagic.end(), out.begin());
-  store_le<uint16_t>(&out[8], kFormatMajor);
-  store_le<uint16_t>(&out[10], kFormatMinor);
-  store_le<uint32_t>(&out[12], kind_id_);
-  store_le<uint64_t>(&out[16], l.file_size);
-  store_le<uint64_t>(&out[24], meta_offset);
-  store_le<uint64_t>(&out[32], meta.size());
-  store_le<uint64_t>(&out[40], table_offset);
-  store_le<uint32_t>(&out[48], static_cast<uint32_t>(sections_.size()));
-  store_le<uint32_t>(&out[52], kSectionEntrySize);
   std::copy(meta.begin(), meta.end(), out.begin() + meta_offset);
   for (size_t i = 0; i < sections_.size(); ++i) {
-    const SectionInfo& info = sections_[i].info;
-    uint8_t* e = &out[table_offset + i * kSectionEntrySize];
-    std::copy(info.name.begin(), info.name.end(), e);
-    store_le<uint32_t>(e + 32, static_cast<uint32_t>(info.type));
-    store_le<uint32_t>(e + 36, static_cast<uint32_t>(info.shape.size()));
-    for (size_t d = 0; d < info.shape.size(); ++d) store_le<uint64_t>(e + 40 + 8 * d, info.shape[d]);
-    store_le<uint64_t>(e + 88, offsets[i]);
-    store_le<uint64_t>(e + 96, info.byte_length);
-    store_le<uint64_t>(e + 104, info.checksum);
+    SectionInfo entry = sections_[i].info;
+    entry.offset = offsets[i];
+    store_section_entry(&out[table_offset + i * kSectionEntrySize], entry);
   }
-  store_le<uint64_t>(&out[56], header_checksum(out.data(), meta_offset, meta.size(), table_offset, table_size));
+  ContainerHeader h;
+  h.kind = kind_id_;
+  h.file_size = l.file_size;
+  h.metadata_offset = meta_offset;
+  h.metadata_size = meta.size();
+  h.section_table_offset = table_offset;
+  h.section_count = static_cast<uint32_t>(sections_.size());
+  store_header(out.data(), h);  // the checksum covers the header's first bytes, so it is stored last
+  store_le<uint64_t>(&out[header_field::checksum],
+                     header_checksum(out.data(), meta_offset, meta.size(), table_offset, table_size));
   l.pieces.push_back(l.head);
   for (size_t i = 0; i < sections_.size(); ++i) {
     l.pieces.push_back(sections_[i].bytes);

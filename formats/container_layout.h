@@ -26,6 +26,38 @@ inline constexpr size_t kSectionNameBytes = 32;          // NUL-padded, 1..31 ch
 inline constexpr size_t kMaxRank = 6;
 inline constexpr uint32_t kMaxSections = 65536;
 
+// Where each header field lies: byte offsets in the 64-byte header (SPEC section 2).
+namespace header_field {
+inline constexpr size_t magic = 0;                  // u8[8]
+inline constexpr size_t major = 8;                  // u16
+inline constexpr size_t minor = 10;                 // u16
+inline constexpr size_t kind = 12;                  // u32
+inline constexpr size_t file_size = 16;             // u64
+inline constexpr size_t metadata_offset = 24;       // u64
+inline constexpr size_t metadata_size = 32;         // u64
+inline constexpr size_t section_table_offset = 40;  // u64
+inline constexpr size_t section_count = 48;         // u32
+inline constexpr size_t section_entry_size = 52;    // u32
+inline constexpr size_t checksum = 56;              // u64, over bytes 0..55, the metadata and the section table
+}  // namespace header_field
+
+// Where each field of a section-table entry lies: byte offsets from the entry's first byte (SPEC section 4).
+namespace entry_field {
+inline constexpr size_t name = 0;           // char[32], NUL-padded
+inline constexpr size_t element_type = 32;  // u32
+inline constexpr size_t rank = 36;          // u32
+inline constexpr size_t shape = 40;         // u64[6], outermost first; entries at index >= rank are 0
+inline constexpr size_t offset = 88;        // u64
+inline constexpr size_t byte_length = 96;   // u64
+inline constexpr size_t checksum = 104;     // u64
+inline constexpr size_t reserved = 112;     // u8[16], zero, up to kSectionEntrySize
+}  // namespace entry_field
+
+static_assert(header_field::checksum == kChecksummedHeaderBytes && header_field::checksum + 8 == kHeaderSize);
+static_assert(entry_field::shape + 8 * kMaxRank == entry_field::offset &&
+              entry_field::name + kSectionNameBytes == entry_field::element_type);
+static_assert(entry_field::reserved + 16 == kSectionEntrySize);
+
 struct ContainerHeader {
   uint16_t major = kFormatMajor;
   uint16_t minor = kFormatMinor;
@@ -39,6 +71,10 @@ struct ContainerHeader {
   uint64_t checksum = 0;  // XXH3-64 of header bytes 0..55, then the metadata, then the section table
 };
 
+// The header's fields from its 64 bytes, and back (the magic is written, not read: callers check it first).
+ContainerHeader load_header(const uint8_t* header);
+void store_header(uint8_t* header, const ContainerHeader& h);
+
 struct SectionInfo {
   std::string name;
   ElementType type = ElementType::u8;
@@ -49,6 +85,9 @@ struct SectionInfo {
 
   uint64_t element_count() const;  // product of shape; only call on a validated section
 };
+
+// Writes a v1.0 section-table entry (kSectionEntrySize bytes, which the caller has zeroed) for `s`.
+void store_section_entry(uint8_t* entry, const SectionInfo& s);
 
 // Section names: 1..31 characters from [a-z0-9_.-], starting with a letter.
 bool is_valid_section_name(const std::string& name);

@@ -41,6 +41,8 @@ inline constexpr MessageInfo file_size_mismatch{
 inline constexpr MessageInfo padding_not_zero{1005, Severity::error, "padding between regions is not zero"};
 // Reported by `validate` for a file it cannot read at all (missing, a folder, no permission): exit 2, not 3.
 inline constexpr MessageInfo file_unreadable{1006, Severity::error, "file cannot be read"};
+inline constexpr MessageInfo trailing_bytes{1007, Severity::error,
+                                            "bytes after the end of the last region (the file must end there)"};
 // 2xxx: header and metadata
 inline constexpr MessageInfo newer_major{2001, Severity::error, "asset written by a newer major format version"};
 inline constexpr MessageInfo bad_major{2002, Severity::error, "invalid major format version"};
@@ -60,6 +62,8 @@ inline constexpr MessageInfo kind_mismatch{2012, Severity::error, "metadata kind
 inline constexpr MessageInfo regions_overlap{2013, Severity::error, "header, metadata and section table overlap"};
 inline constexpr MessageInfo metadata_wrong_type{2014, Severity::error,
                                                  "a required metadata key has the wrong JSON type"};
+inline constexpr MessageInfo metadata_duplicate_key{2015, Severity::error,
+                                                    "metadata repeats a key within one JSON object"};
 // 3xxx: sections
 inline constexpr MessageInfo bad_section_name{3001, Severity::error, "invalid section name"};
 inline constexpr MessageInfo duplicate_section{3002, Severity::error, "duplicate section name"};

@@ -1,6 +1,7 @@
 // The glint shaders (see glints_effect.h).
 #include "libbake/eval/glints_effect.h"
 
+#include <array>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -29,8 +30,9 @@ using DistributionAt = std::function<GlintDistribution(const ShadingContext& c)>
 // ds per pixel step, s = (h . T, h . B), for the light in direction l at `distance`: h = (l + v) / |l + v| moves
 // by dh = (I - h h^T)(dl + dv) / |l + v| per step, with dl = -(dp - l (l . dp)) / distance (0 for a directional
 // light) and dv from the footprint, and on a curved surface the frame turns with the normal: to first order
-// dT = -N (T . dN), dB = -N (B . dN), adding -(h . N)(T . dN, B . dN) (glint_pndf.h: "Directional spread";
-// pixel_sweep.h: how it is used). At grazing angles the two steps differ by an order of magnitude.
+// dT = -N (T . dN), dB = -N (B . dN), adding -(h . N)(T . dN, B . dN). The P-NDF turns them into the half
+// vector's slope field over the footprint (glint_surface_mapping.h, glint_pndf.h). At grazing angles the two steps
+// differ by an order of magnitude.
 Mat2 half_vector_steps(const ShadingContext& c, const Vec3& l, double distance) {
   const Vec3 sum = l + c.to_viewer;
   const double length = sum.norm();
@@ -48,6 +50,26 @@ Mat2 half_vector_steps(const ShadingContext& c, const Vec3& l, double distance) 
   }
   // A grazing ray's infinite step: no sweep rather than none at all.
   return steps.allFinite() ? steps : Mat2::Zero();
+}
+
+// D_P over one cell of a pixel at uv (the whole pixel when it is one cell), whose half vector at its centre is s and
+// moves by the columns of `steps` per cell step: its anisotropic footprint as probes along its major axis
+// (glint_surface_mapping.h), equally weighted, each seeing the half vector's slope field K (its own s moved by K
+// along its offset). 0 for a grazing footprint.
+double cell_pndf(const GlintPndf& pndf, const Vec2& uv, const UvFootprint& cell, const Vec2& s, const Mat2& steps,
+                 uint32_t W, uint32_t H) {
+  const FootprintProbes probes = footprint_probes(uv, cell, W, H);
+  const double probe_sigma = glint_probe_footprint(uv, probes.begin()->width, W, H).sigma;
+  if (!std::isfinite(probe_sigma)) return 0.0;  // grazing
+  const Vec2 centre = glint_target_point(uv, W, H);
+  const Mat2 slope = glint_half_vector_slope(steps, cell.duv_dx, cell.duv_dy, probe_sigma, W, H);
+  double sum = 0.0;
+  for (const FootprintProbe& p : probes) {
+    GlintFootprint footprint = glint_probe_footprint(p.uv, p.width, W, H);
+    footprint.slope = slope;
+    sum += pndf.evaluate(footprint, s + slope * (footprint.center - centre), nullptr, true);
+  }
+  return sum / double(probes.size());
 }
 
 class GlintShader : public MaterialShader {
@@ -138,23 +160,24 @@ ShaderPtr glints_effect_shader(const EffectShaderRequest& request) {
       GlintSurface::open(example, Asset::open(request.assets.at(0)), Asset::open(request.assets.at(1)), settings);
   return std::make_shared<GlintShader>(
       [f, W, H](const ShadingContext& c) {
-        // The pixel's anisotropic footprint as probes along its major axis (glint_surface_mapping.h), equally weighted.
-        const FootprintProbes probes = footprint_probes(c.uv, c.footprint, W, H);
-        std::vector<GlintFootprint> footprints;
-        footprints.reserve(size_t(probes.size()));
-        for (const FootprintProbe& p : probes) {
-          footprints.push_back(glint_probe_footprint(p.uv, p.width, W, H));
-          if (!std::isfinite(footprints.back().sigma))
-            return GlintDistribution([](const Vec2&, const Mat2&) { return 0.0; });  // grazing
-        }
-        return GlintDistribution([f, footprints = std::move(footprints)](const Vec2& s, const Mat2& steps) {
-          const SweptNormals swept = pixel_sweep(s, steps, f->surface->pndf().sigma_r());
+        return GlintDistribution([f, uv = c.uv, pixel = c.footprint, W, H](const Vec2& s, const Mat2& steps) {
+          // The pixel as sub-pixel cells (pixel_sweep.h), each its own footprint with its own half vector.
+          const GlintPndf& pndf = f->surface->pndf();
+          const std::array<int, 2> cells = pixel_sweep_cells(steps, pndf.sigma_r());
+          UvFootprint cell = pixel;
+          cell.duv_dx /= cells[0];
+          cell.duv_dy /= cells[1];
+          Mat2 cell_steps = steps;
+          cell_steps.col(0) /= cells[0];
+          cell_steps.col(1) /= cells[1];
           double sum = 0.0;
-          for (GlintFootprint footprint : footprints) {
-            footprint.sweep = swept.residual;
-            sum += f->surface->pndf().evaluate_mean(footprint, swept.normals, nullptr, true);
-          }
-          return sum / double(footprints.size());
+          for (int j = 0; j < cells[1]; ++j)
+            for (int i = 0; i < cells[0]; ++i) {
+              const Vec2 d((i + 0.5) / cells[0] - 0.5, (j + 0.5) / cells[1] - 0.5);  // in pixel steps
+              sum += cell_pndf(pndf, uv + d.x() * pixel.duv_dx + d.y() * pixel.duv_dy, cell, s + steps * d, cell_steps,
+                               W, H);
+            }
+          return sum / double(cells[0] * cells[1]);
         });
       },
       true);

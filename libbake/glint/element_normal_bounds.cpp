@@ -10,8 +10,7 @@
 namespace mbk {
 namespace {
 
-constexpr double kK = kGlintSubElementsPerAxis;
-constexpr double kReach = 0.5 - 0.5 / kK + kGlintSpatialCutoffSigmas * kGlintElementSigmaTexels / kK;  // texels
+constexpr double kReach = kGlintElementReachTexels;  // texels
 
 }  // namespace
 

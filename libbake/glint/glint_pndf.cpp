@@ -5,10 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <span>
 #include <vector>
-
-#include <Eigen/Eigenvalues>
 
 #include "formats/error.h"
 #include "libbake/glint/glint_technique.h"
@@ -37,10 +34,36 @@ std::vector<double> axis_weights(int64_t lo, int64_t hi, double c, double sigma_
   return w;
 }
 
-PositionNormalElement sub_element(const GlintPointQuery& point, int64_t t0, int64_t t1, int a0, int a1) {
+// Sub-element (a0, a1) of texel (t0, t1) as the footprint's slope field sees it (glint_pndf.h):
+// n' = n - K (u - c), J' = J - K.
+PositionNormalElement sub_element(const GlintPointQuery& point, const GlintFootprint& footprint, int64_t t0, int64_t t1,
+                                  int a0, int a1) {
   const Vec2 u(sub_element_position(t0, a0), sub_element_position(t1, a1));
   const NormalSample q = point.evaluate(u);
-  return {u, q.n, q.jacobian, kGlintSubElementSigmaTexels};
+  const Mat2& k = footprint.slope;
+  return {u, q.n - k * (u - footprint.center), q.jacobian - k, kGlintSubElementSigmaTexels};
+}
+
+// Bounds b shifted by -K (u - c) over the texels [x_lo, x_hi] x [y_lo, y_hi] grown by the element reach
+// (glint_pndf.h): per component, the interval of K (u - c) over that box is subtracted.
+RmqBounds shifted(const RmqBounds& b, const GlintFootprint& footprint, int64_t x_lo, int64_t x_hi, int64_t y_lo,
+                  int64_t y_hi) {
+  const Mat2& k = footprint.slope;
+  if (k.isZero(0.0)) return b;
+  const double r = kGlintElementReachTexels;
+  const Vec2 lo(double(x_lo) + 0.5 - r - footprint.center.x(), double(y_lo) + 0.5 - r - footprint.center.y());
+  const Vec2 hi(double(x_hi) + 0.5 + r - footprint.center.x(), double(y_hi) + 0.5 + r - footprint.center.y());
+  Vec2 shift_lo, shift_hi;
+  for (int i = 0; i < 2; ++i) {
+    shift_lo[i] = std::min(k(i, 0) * lo.x(), k(i, 0) * hi.x()) + std::min(k(i, 1) * lo.y(), k(i, 1) * hi.y());
+    shift_hi[i] = std::max(k(i, 0) * lo.x(), k(i, 0) * hi.x()) + std::max(k(i, 1) * lo.y(), k(i, 1) * hi.y());
+  }
+  return {b.min_x - shift_hi.x(), b.max_x - shift_lo.x(), b.min_y - shift_hi.y(), b.max_y - shift_lo.y()};
+}
+
+// Whether s lies outside the box b widened by the normal cut-off m.
+bool outside(const RmqBounds& b, const Vec2& s, double m) {
+  return s.x() < b.min_x - m || s.x() > b.max_x + m || s.y() < b.min_y - m || s.y() > b.max_y + m;
 }
 
 // Index i with probability w_i / sum w, from u in [0, 1) (inversion of the running sum).
@@ -55,17 +78,32 @@ size_t pick(const std::vector<double>& w, double u) {
   return w.size() - 1;
 }
 
+std::vector<double> running_sums(const std::vector<double>& w) {
+  std::vector<double> out(w.size() + 1, 0.0);
+  for (size_t i = 0; i < w.size(); ++i) out[i + 1] = out[i] + w[i];
+  return out;
+}
+
+// The sub-element masses of a footprint's texels: common * wx_i * wy_j (separable), kept as running sums of the
+// axis factors so that any rectangle's mass is two differences; total() is the P-NDF's normalizer.
+struct FootprintMasses {
+  std::vector<double> prefix_x, prefix_y;  // K per texel, from the footprint's first texel
+  double common = 0.0;                     // element_footprint_mass at the footprint's centre
+
+  FootprintMasses(const GlintFootprint& footprint, const TexelRange& t, double sigma_r)
+      : prefix_x(running_sums(axis_weights(t.t0_lo, t.t0_hi, footprint.center.x(), footprint.sigma))),
+        prefix_y(running_sums(axis_weights(t.t1_lo, t.t1_hi, footprint.center.y(), footprint.sigma))),
+        common(element_footprint_mass(footprint.center, kGlintSubElementSigmaTexels, footprint, sigma_r)) {}
+  double total() const { return common * prefix_x.back() * prefix_y.back(); }
+};
+
 }  // namespace
 
 TexelRange footprint_texels(const GlintFootprint& footprint) {
   const double s = footprint.sigma;
-  const Mat2& v = footprint.sweep;
-  const bool covariance = v.allFinite() && v(0, 0) >= 0.0 && v(1, 1) >= 0.0 && v(0, 1) == v(1, 0) &&
-                          v(0, 1) * v(0, 1) <= v(0, 0) * v(1, 1) * (1.0 + 1e-12);
   if (!(std::isfinite(s) && s > 0.0) || !std::isfinite(footprint.center.x()) || !std::isfinite(footprint.center.y()) ||
-      !covariance)
-    throw Error(ExitCode::invalid_input,
-                "P-NDF footprint needs a finite centre, a finite sigma > 0 and a sweep that is a finite covariance",
+      !footprint.slope.allFinite())
+    throw Error(ExitCode::invalid_input, "P-NDF footprint needs a finite centre, a finite sigma > 0 and a finite slope",
                 "P-NDF");
   const double r = kGlintFootprintCutoffSigmas * s;
   constexpr double kLimit = 4.0e18;  // the texel indices must fit in int64 with room for patch arithmetic
@@ -89,113 +127,29 @@ GlintPndf::GlintPndf(const GlintRangeQuery& range, double sigma_r) : range_(&ran
     throw Error(ExitCode::invalid_input, "P-NDF intrinsic roughness must be finite and > 0", "P-NDF");
 }
 
-// C = sigma_r^2 I + the footprint's sweep, whitened (glint_pndf.h, "Directional spread"). C is symmetric with
-// eigenvalues >= sigma_r^2 > 0; W = C^(-1/2) and C^(1/2) come from its eigen-decomposition in closed form.
-// The normals D_P is evaluated at, whitened, and their bounding box.
-struct GlintPndf::Normals {
-  std::span<const Vec2> s;
-  std::vector<Vec2> ws;  // W s
-  RmqBounds box;
-
-  Normals(std::span<const Vec2> normals, const Mat2& whiten)
-      : s(normals), box{INFINITY, -INFINITY, INFINITY, -INFINITY} {
-    ws.reserve(normals.size());
-    for (const Vec2& n : normals) {
-      ws.push_back(whiten * n);
-      box = {std::min(box.min_x, n.x()), std::max(box.max_x, n.x()), std::min(box.min_y, n.y()),
-             std::max(box.max_y, n.y())};
-    }
-  }
-};
-
-struct GlintPndf::NormalKernel {
-  Mat2 whiten;        // W = C^(-1/2)
-  Mat2 unwhiten;      // C^(1/2)
-  double det_whiten;  // det W = 1 / sqrt(det C)
-  Vec2 cutoff;        // the normal cut-off per component: kGlintNormalCutoffSigmas sqrt(C_ii)
-  double sigma_min;   // sqrt of C's smaller eigenvalue
-};
-
-GlintPndf::NormalKernel GlintPndf::normal_kernel(const GlintFootprint& footprint) const {
-  const Mat2 c = sigma_r_ * sigma_r_ * Mat2::Identity() + footprint.sweep;
-  Eigen::SelfAdjointEigenSolver<Mat2> eigen;
-  eigen.computeDirect(c);
-  const Vec2 lambda = eigen.eigenvalues().cwiseMax(sigma_r_ * sigma_r_);  // rounding never below sigma_r^2
-  const Mat2& q = eigen.eigenvectors();
-  NormalKernel k;
-  k.whiten = q * lambda.cwiseSqrt().cwiseInverse().asDiagonal() * q.transpose();
-  k.unwhiten = q * lambda.cwiseSqrt().asDiagonal() * q.transpose();
-  k.det_whiten = 1.0 / std::sqrt(lambda.x() * lambda.y());
-  k.cutoff = kGlintNormalCutoffSigmas * Vec2(std::sqrt(c(0, 0)), std::sqrt(c(1, 1)));
-  k.sigma_min = std::sqrt(lambda.minCoeff());
-  return k;
-}
-
-bool GlintPndf::outside(const RmqBounds& b, const RmqBounds& normals, const NormalKernel& kernel) {
-  const Vec2& m = kernel.cutoff;
-  return normals.max_x < b.min_x - m.x() || normals.min_x > b.max_x + m.x() || normals.max_y < b.min_y - m.y() ||
-         normals.min_y > b.max_y + m.y();
-}
-
-double GlintPndf::element_term(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Normals& normals,
-                               const NormalKernel& kernel) const {
-  const RmqBounds b = range_->element_bounds(t0, t1);
-  if (outside(b, normals.box, kernel)) return 0.0;
-  std::array<PositionNormalElement, kK * kK> whitened;
-  for (int a1 = 0; a1 < kK; ++a1)
-    for (int a0 = 0; a0 < kK; ++a0) {
-      PositionNormalElement& e = whitened[size_t(a1 * kK + a0)] = sub_element(range_->point(), t0, t1, a0, a1);
-      e.n = kernel.whiten * e.n;
-      e.jacobian = kernel.whiten * e.jacobian;
-    }
+double GlintPndf::element_term(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Vec2& s) const {
+  const RmqBounds b = shifted(range_->element_bounds(t0, t1), footprint, t0, t0, t1, t1);
+  if (outside(b, s, kGlintNormalCutoffSigmas * sigma_r_)) return 0.0;
   double sum = 0.0;
-  for (size_t i = 0; i < normals.s.size(); ++i) {
-    const Vec2& s = normals.s[i];
-    if (outside(b, {s.x(), s.x(), s.y(), s.y()}, kernel)) continue;
-    for (const PositionNormalElement& e : whitened) sum += element_footprint_integral(e, footprint, 1.0, normals.ws[i]);
-  }
+  for (int a1 = 0; a1 < kK; ++a1)
+    for (int a0 = 0; a0 < kK; ++a0)
+      sum +=
+          element_footprint_integral(sub_element(range_->point(), footprint, t0, t1, a0, a1), footprint, sigma_r_, s);
   return sum;
 }
-
-namespace {
-
-std::vector<double> running_sums(const std::vector<double>& w) {
-  std::vector<double> out(w.size() + 1, 0.0);
-  for (size_t i = 0; i < w.size(); ++i) out[i + 1] = out[i] + w[i];
-  return out;
-}
-
-// The sub-element masses of a footprint's texels (in whitened normals): common * wx_i * wy_j (separable), kept as
-// running sums of the axis factors so that any rectangle's mass is two differences; total() is the P-NDF's
-// normalizer.
-struct FootprintMasses {
-  std::vector<double> prefix_x, prefix_y;  // K per texel, from the footprint's first texel
-  double common = 0.0;                     // element_footprint_mass at the footprint's centre
-
-  FootprintMasses(const GlintFootprint& footprint, const TexelRange& t)
-      : prefix_x(running_sums(axis_weights(t.t0_lo, t.t0_hi, footprint.center.x(), footprint.sigma))),
-        prefix_y(running_sums(axis_weights(t.t1_lo, t.t1_hi, footprint.center.y(), footprint.sigma))),
-        common(element_footprint_mass(footprint.center, kGlintSubElementSigmaTexels, footprint, 1.0)) {}
-  double total() const { return common * prefix_x.back() * prefix_y.back(); }
-};
-
-}  // namespace
 
 double GlintPndf::evaluate_brute_force(const GlintFootprint& footprint, const Vec2& s) const {
   const TexelRange t = footprint_texels(footprint);
   if (t.empty()) return 0.0;
-  const NormalKernel kernel = normal_kernel(footprint);
-  const Normals normals({&s, 1}, kernel.whiten);
   double sum = 0.0;
   for (int64_t t1 = t.t1_lo; t1 <= t.t1_hi; ++t1)
-    for (int64_t t0 = t.t0_lo; t0 <= t.t0_hi; ++t0) sum += element_term(t0, t1, footprint, normals, kernel);
-  return kernel.det_whiten * sum / FootprintMasses(footprint, t).total();
+    for (int64_t t0 = t.t0_lo; t0 <= t.t0_hi; ++t0) sum += element_term(t0, t1, footprint, s);
+  return sum / FootprintMasses(footprint, t, sigma_r_).total();
 }
 
 struct GlintPndf::Query {
   const GlintFootprint& footprint;
-  NormalKernel kernel;
-  Normals normals;
+  Vec2 s;
   TexelRange texels;
   bool aggregate;
   FootprintMasses masses;
@@ -204,30 +158,27 @@ struct GlintPndf::Query {
 double GlintPndf::traverse(const TargetNode& node, const Query& q, PndfStatistics& stats) const {
   ++stats.nodes_visited;
   const int64_t h = range_->target_side();
+  const int64_t x = node.patch_i * h + node.x0, y = node.patch_j * h + node.y0;
   if (node.width == 1 && node.height == 1) {
-    const double v =
-        element_term(node.patch_i * h + node.x0, node.patch_j * h + node.y0, q.footprint, q.normals, q.kernel);
+    const double v = element_term(x, y, q.footprint, q.s);
     if (v != 0.0) ++stats.elements_evaluated;
     return v;
   }
   uint32_t lookups = 0;
-  const RmqBounds b = range_->node_bounds(node, &lookups);
+  const RmqBounds b =
+      shifted(range_->node_bounds(node, &lookups), q.footprint, x, x + node.width - 1, y, y + node.height - 1);
   stats.rmq_lookups += lookups;
-  if (outside(b, q.normals.box, q.kernel)) return 0.0;
-  const double narrow = kGlintAggregateWidthSigmas * q.kernel.sigma_min;
+  if (outside(b, q.s, kGlintNormalCutoffSigmas * sigma_r_)) return 0.0;
+  const double narrow = kGlintAggregateWidthSigmas * sigma_r_;
   if (q.aggregate && b.max_x - b.min_x <= narrow && b.max_y - b.min_y <= narrow) {
     ++stats.nodes_aggregated;
-    const int64_t x = (node.patch_i * h + node.x0 - q.texels.t0_lo) * kK;
-    const int64_t y = (node.patch_j * h + node.y0 - q.texels.t1_lo) * kK;
+    const int64_t mx = (x - q.texels.t0_lo) * kK, my = (y - q.texels.t1_lo) * kK;
     const FootprintMasses& m = q.masses;
-    const double mass = m.common * (m.prefix_x[size_t(x + node.width * kK)] - m.prefix_x[size_t(x)]) *
-                        (m.prefix_y[size_t(y + node.height * kK)] - m.prefix_y[size_t(y)]);
-    const Vec2 wc = q.kernel.whiten * Vec2(0.5 * (b.min_x + b.max_x), 0.5 * (b.min_y + b.max_y));
-    double sum = 0.0;
-    for (size_t i = 0; i < q.normals.s.size(); ++i)
-      if (!outside(b, {q.normals.s[i].x(), q.normals.s[i].x(), q.normals.s[i].y(), q.normals.s[i].y()}, q.kernel))
-        sum += std::exp(-0.5 * (q.normals.ws[i] - wc).squaredNorm());
-    return mass * sum / (2.0 * std::numbers::pi);
+    const double mass = m.common * (m.prefix_x[size_t(mx + node.width * kK)] - m.prefix_x[size_t(mx)]) *
+                        (m.prefix_y[size_t(my + node.height * kK)] - m.prefix_y[size_t(my)]);
+    const Vec2 centre(0.5 * (b.min_x + b.max_x), 0.5 * (b.min_y + b.max_y));
+    const double ir2 = 1.0 / (sigma_r_ * sigma_r_);
+    return mass * ir2 * std::exp(-0.5 * (q.s - centre).squaredNorm() * ir2) / (2.0 * std::numbers::pi);
   }
   const uint32_t w0 = (node.width + 1) / 2, h0 = (node.height + 1) / 2;
   double sum = 0.0;
@@ -245,15 +196,9 @@ double GlintPndf::traverse(const TargetNode& node, const Query& q, PndfStatistic
 
 double GlintPndf::evaluate(const GlintFootprint& footprint, const Vec2& s, PndfStatistics* stats,
                            bool aggregate) const {
-  return evaluate_mean(footprint, {&s, 1}, stats, aggregate);
-}
-
-double GlintPndf::evaluate_mean(const GlintFootprint& footprint, std::span<const Vec2> s, PndfStatistics* stats,
-                                bool aggregate) const {
   const TexelRange t = footprint_texels(footprint);
-  if (t.empty() || s.empty()) return 0.0;
-  const NormalKernel kernel = normal_kernel(footprint);
-  const Query q{footprint, kernel, Normals(s, kernel.whiten), t, aggregate, FootprintMasses(footprint, t)};
+  if (t.empty()) return 0.0;
+  const Query q{footprint, s, t, aggregate, FootprintMasses(footprint, t, sigma_r_)};
   PndfStatistics local;
   const int64_t h = range_->target_side();
   double sum = 0.0;
@@ -276,7 +221,7 @@ double GlintPndf::evaluate_mean(const GlintFootprint& footprint, std::span<const
     stats->rmq_lookups += local.rmq_lookups;
     stats->nodes_aggregated += local.nodes_aggregated;
   }
-  return kernel.det_whiten * sum / (q.masses.total() * double(s.size()));
+  return sum / q.masses.total();
 }
 
 std::optional<Vec2> GlintPndf::sample(const GlintFootprint& footprint, const std::function<double()>& uniform) const {
@@ -301,13 +246,11 @@ std::optional<Vec2> GlintPndf::draw(const GlintFootprint& footprint, const Texel
                                     const std::vector<double>& wy, const std::function<double()>& uniform) const {
   const size_t i0 = pick(wx, uniform()), i1 = pick(wy, uniform());
   const int64_t t0 = t.t0_lo + int64_t(i0 / kK), t1 = t.t1_lo + int64_t(i1 / kK);
-  PositionNormalElement e = sub_element(range_->point(), t0, t1, int(i0 % kK), int(i1 % kK));
-  const NormalKernel kernel = normal_kernel(footprint);
-  e.n = kernel.whiten * e.n;
-  e.jacobian = kernel.whiten * e.jacobian;
-  const Vec2 s =
-      kernel.unwhiten * sample_element_normal(e, footprint, 1.0, {uniform(), uniform(), uniform(), uniform()});
-  if (outside(range_->element_bounds(t0, t1), {s.x(), s.x(), s.y(), s.y()}, kernel)) return std::nullopt;
+  const PositionNormalElement e = sub_element(range_->point(), footprint, t0, t1, int(i0 % kK), int(i1 % kK));
+  const Vec2 s = sample_element_normal(e, footprint, sigma_r_, {uniform(), uniform(), uniform(), uniform()});
+  if (outside(shifted(range_->element_bounds(t0, t1), footprint, t0, t0, t1, t1), s,
+              kGlintNormalCutoffSigmas * sigma_r_))
+    return std::nullopt;
   return s;
 }
 

@@ -8,63 +8,65 @@
 // integrated against the footprint in closed form (position_normal_element.h).
 // Truncation (the SAME in every evaluation, so that traversal == brute force up to rounding):
 // - footprint: the texels whose centres lie in the square |u_t - c|_inf <= 3 sigma_p (footprint_texels());
-// - normal: element t counts at s only if s lies in its element bounds (blended_range.h: the blend of its four
-//   example texels' leaf intervals, the reach of its sub-elements) widened by 4 sqrt(C_ii) in component i,
-//   C the elements' normal covariance (sigma_r^2 I plus the footprint's sweep, below): the box holds C's
-//   4-sigma ellipse;
+// - normal: element t counts at s only if s lies in its element box widened by 4 sigma_r per component: the
+//   element bounds (blended_range.h: the blend of its four example texels' leaf intervals, the reach of its
+//   sub-elements) shifted by -K (u - c) over its reach square (below; no shift when K = 0);
 // - position: the element's Gaussian is integrated over the whole plane (the 3 sigma_h spatial cut-off only
-//   sizes the leaf intervals).
-// Directional spread: [Wang20] and [Yan16] evaluate D_P at one s per pixel, as if the half vector were the same
-// over the whole pixel. Under a point light or a perspective camera it sweeps s across the pixel (by ds/dx,
-// ds/dy per pixel step); a renderer that shades a pixel once cuts that sweep into cells (pixel_sweep.h), averages
-// D_P over their centres (evaluate_mean) and passes each cell's own sweep as footprint.sweep, the covariance S of
-// s over the cell, and every element is evaluated with the normal covariance
-// C = sigma_r^2 I + S in place of sigma_r^2 I: the elements' normal Gaussians convolved with the sweep, taken
-// independent of position. C is anisotropic in general (at grazing angles s sweeps across the view many times
-// faster than along it), so the elements are evaluated in whitened normals: with W = C^(-1/2) (symmetric),
-// exp(-(s - n)^T C^-1 (s - n) / 2) = exp(-|W s - W n|^2 / 2), i.e. the element with W n, W J evaluated at W s
-// with unit roughness (position_normal_element.h), and D_P picks up det W from the change of variables
-// (the masses below are integrals over whitened normals). Deviation from the papers, measured: a flat map under
-// two point lights at 96 x 54 rendered its highlights 29% too bright in one 8 x 8 block and 2% too dark in
-// another against 16 x 16 rays per pixel without the sweep (test: GlintsEffect.FlatMapMatchesItsReference); an
-// isotropic sweep (the mean of the two variances) streaked a grazing highlight toward the horizon (test:
-// GlintsEffect.GrazingHighlightStaysWhereTheReferenceHasIt).
+//   sizes the leaf intervals and the reach square).
+// The half vector's slope field (deviation [Wang20], [Yan16], which evaluate D_P at one s per pixel, as if every
+// point of the footprint saw one half vector): under a point light or a perspective camera the half vector
+// moves across the pixel, and a point u of the surface sees its OWN half vector. To first order its normal
+// components at u are s(u) = s + K (u - c), K = footprint.slope = ds/du (glint_surface_mapping.h builds it as
+// S M^-1 from the pixel's sweep S = ds/d(pixel) and uv Jacobian M = du/d(pixel)), and D_P at s is
+// sum_i integral G_P(u) G_i(u, s(u)) du / sum_i m_i. Since
+//   s(u) - n_i - J_i (u - u_i) = s - n'_i - J'_i (u - u_i),    n'_i = n_i - K (u_i - c),    J'_i = J_i - K,
+// each element is Eq. (1) of position_normal_element.h with n', J', evaluated at s: exact for the linear field
+// whatever K, and K = 0 is the point case. The masses m_i do not depend on n or J, so D_P still integrates to 1
+// over s. The shifted box holds n'_i + J'_i (u - u_i) over every sub-element's cut-off: element t's
+// sub-elements lie within kGlintElementReachTexels of its centre per axis (glint_technique.h), its element bounds
+// hold n_i + J_i (u - u_i) there, and K (u - c) over that square is an interval per component.
+// A renderer that shades a pixel once with a Gaussian footprint also cuts the pixel into sub-pixel cells, each its
+// own footprint and half vector (pixel_sweep.h: a Gaussian is not the pixel's box).
+// Measured against sub-pixel point NDFs through the same microstructure (test:
+// GlintPndf.SlopeFieldFollowsTheMeanOfPointNdfsOverTheFootprint): relative L1 0.03-0.04 with the field, 0.33 with
+// the sweep taken independent of position (every texel tested against every half vector of the pixel: the
+// previous form, cells of the sweep box plus a residual covariance on the normals).
 // Normalisation: D_P(s) = sum k(s) / sum m over the footprint's sub-elements, i.e. the untruncated D_P would
 // integrate to exactly 1 over s; the normal truncation removes the mass beyond 4 sigma per component (< 1e-4).
 //
 // Traversal (Algorithm 3 with [Wang20] Sec. 5.2): the footprint's texel rectangle is split at target patch
 // borders into one rectangle per covered patch, however many (never clamped in size); each is a root node.
-// A node of more than one texel is pruned when s lies outside its range bounds (blended_range.h) widened by
-// the normal cut-off, else split into (up to) four halves; a one-texel node is the element test above. Node bounds
-// contain every element bound of the node, so pruning drops only elements that would add exactly 0.
+// A node of more than one texel is pruned when s lies outside its range bounds (blended_range.h) shifted by
+// -K (u - c) over the node's rectangle grown by the reach and widened by the normal cut-off, else split into
+// (up to) four halves; a one-texel node is the element test above. Node boxes contain every element box of the
+// node, so pruning drops only elements that would add exactly 0.
 // Deviation [Wang20]: Alg. 3 starts from a power-of-two square grown past the footprint; here nodes are the
 // footprint's own rectangles halved, so no node reads texels outside the footprint (same result, fewer
 // range queries).
 //
 // Aggregation (deviation [Wang20]: on maps that are mostly flat ground nearly every texel reaches the half
 // vectors that make glints, so pruning alone visits every texel of the footprint): with `aggregate`, a node
-// whose bounds are at most kGlintAggregateWidthSigmas (0.01) sigma_min wide in both components (sigma_min^2 the
-// smaller eigenvalue of C), c their centre, is summed in closed form as if every element were N(s; c, C) times its
-// mass (exact for elements with J = 0 and n = c: position_normal_element.h Eq. 1 reduces to m N(s; n, C)); the
-// masses are separable, so a node costs two differences of running sums. Bound, in whitened normals (|W x| <=
-// |x| / sigma_min): every element of such a node has its normals within the node's box up to its
-// sub-elements' spatial cut-off (3 sigma_h / K: 0.54% of its mass beyond), i.e. within 0.0071 of c whitened, so
-// where the whitened distance r = |W (s - c)| is at most 4.02, replacing N(s; n, C) by N(s; c, C) changes it by a
-// factor within exp(+-(4.02 * 0.0071 + 0.0071^2 / 2)) = 1 +- 2.9%, and beyond that every element's Gaussian is
-// below e^-8 of its peak, so its change is below 1e-5 of the peak; hence |D_agg - D| <= 0.03 D + 0.006 peak,
-// peak = 1 / (2 pi sqrt(det C)) (test: GlintPndf.AggregatedTraversalWithinItsBound_1000Queries, isotropic and
-// anisotropic sweeps).
+// whose shifted box (above, before widening) is at most kGlintAggregateWidthSigmas (0.01) sigma_r wide in both
+// components, c_b its centre, is summed in closed form as if every element were N(s; c_b, sigma_r^2 I) times its
+// mass (exact for elements with J' = 0 and n' = c_b: position_normal_element.h Eq. 1 reduces to m N(s; n', .));
+// the masses are separable, so a node costs two differences of running sums. Bound: every element of such a
+// node has its normals n'_i + J'_i (u - u_i) within the node's shifted box up to its sub-elements' spatial
+// cut-off (3 sigma_h / K: 0.54% of its mass beyond), i.e. within 0.0071 sigma_r of c_b, so where
+// r = |s - c_b| / sigma_r is at most 4.02, replacing the element by N(s; c_b, .) changes it by a factor within
+// exp(+-(4.02 * 0.0071 + 0.0071^2 / 2)) = 1 +- 2.9%, and beyond that every element's Gaussian is below e^-8 of
+// its peak, so its change is below 1e-5 of the peak; hence |D_agg - D| <= 0.03 D + 0.006 peak,
+// peak = 1 / (2 pi sigma_r^2) (test: GlintPndf.AggregatedTraversalWithinItsBound_1000Queries, with and without
+// slope fields).
 // Sampling ([Wang20] Sec. 5.3): a sub-element is picked with probability m / sum m (m is separable in the two
-// axes, so two 1-D inversions), a normal is drawn from k / m (in whitened normals, then mapped back by C^(1/2)), and
-// the draw restarts when that normal lies outside its texel's truncation box: the samples' density is then exactly
-// proportional to D_P.
+// axes, so two 1-D inversions), a normal is drawn from k / m (with n', J'), and the draw restarts when that
+// normal lies outside its texel's shifted truncation box: the samples' density is then exactly proportional to
+// D_P.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <functional>
 #include <optional>
-#include <span>
 #include <vector>
 
 #include "libbake/glint/blended_range.h"
@@ -78,7 +80,7 @@ struct TexelRange {
 };
 
 // The texels whose centres lie in the footprint's truncation square. Throws Error(invalid_input) for a
-// non-finite centre, a sigma that is not finite and > 0, or a sweep that is not a finite covariance.
+// non-finite centre, a sigma that is not finite and > 0, or a slope that is not finite.
 TexelRange footprint_texels(const GlintFootprint& footprint);
 
 // The reference the P-NDF approximates ([Wang20] Eq. 1 before Yan16's elements): the NDF of ONE point u of the
@@ -107,10 +109,6 @@ class GlintPndf {
   // nodes in closed form (rules above: within the stated bound of brute force, not equal to it).
   double evaluate(const GlintFootprint& footprint, const Vec2& s, PndfStatistics* stats = nullptr,
                   bool aggregate = false) const;
-  // The mean of D_P over several normals in one traversal (a node is pruned when every normal is outside it;
-  // the leaves share their sub-elements): what a renderer needs for the box sweep below. 0 for no normals.
-  double evaluate_mean(const GlintFootprint& footprint, std::span<const Vec2> s, PndfStatistics* stats = nullptr,
-                       bool aggregate = false) const;
   // D_P(s) summed over every texel of the footprint (the reference the traversal must equal).
   double evaluate_brute_force(const GlintFootprint& footprint, const Vec2& s) const;
   // A normal drawn with density D_P (rules above), from `uniform` (numbers in [0, 1)); nullopt when the
@@ -121,14 +119,8 @@ class GlintPndf {
   std::optional<Vec2> sample_once(const GlintFootprint& footprint, const std::function<double()>& uniform) const;
 
  private:
-  struct NormalKernel;  // the elements' normal covariance C and its whitening (glint_pndf.cpp)
-  struct Normals;       // the normals of one evaluation, whitened, and their box (glint_pndf.cpp)
-  NormalKernel normal_kernel(const GlintFootprint& footprint) const;
-  // Element t's sum of k over its sub-elements and the normals, in whitened normals.
-  double element_term(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Normals& normals,
-                      const NormalKernel& kernel) const;
-  // Whether the box of normals lies outside the bounds b widened by the normal cut-off.
-  static bool outside(const RmqBounds& b, const RmqBounds& normals, const NormalKernel& kernel);
+  // Element t's sum of k over its sub-elements at s, 0 when s is outside its shifted box (rules above).
+  double element_term(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Vec2& s) const;
   struct Query;  // what one traversal shares with every node (glint_pndf.cpp)
   double traverse(const TargetNode& node, const Query& q, PndfStatistics& stats) const;
   std::optional<Vec2> draw(const GlintFootprint& footprint, const TexelRange& t, const std::vector<double>& wx,

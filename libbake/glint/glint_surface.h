@@ -1,7 +1,8 @@
 // A glint material as the evaluator shades it ([Wang20]): the example normal map, its two baked assets (`lut`
 // and `rmq`, read through formats/ only) and the settings of the infinite microstructure, assembled into the
 // point query, the range query and the P-NDF. The evaluator's shader evaluates pndf() over the pixel's footprint
-// (glint_surface_mapping.h) at the half vector's normal components (pixel_sweep.h), by the aggregated traversal.
+// at the half vector's normal components, with the half vector's slope field over it (glint_surface_mapping.h),
+// by the aggregated traversal.
 #pragma once
 
 #include <cstdint>

@@ -18,6 +18,16 @@
 // one texel centre in any footprint (magnification shows the blend of the nearest elements). An elongated footprint
 // of s1 x s2 texels thus costs N w^2 ~ s1 s2 texels, not the s1^2 of one circle over its longer axis, which also
 // blurred the glints over many times the pixel's area at grazing angles.
+// The half vector's slope field (glint_pndf.h): the renderer knows S = ds/d(pixel) (columns: the change of the half
+// vector's normal components per pixel step x and y) and M = du/d(pixel) (the uv derivatives in target texels,
+// diag(W, -H) [duv/dx duv/dy]: the v flip above), so to first order s moves across the surface by
+//     K = ds/du = S M^-1 = S V diag(1 / sigma_1, 1 / sigma_2) U^T        (M = U diag(sigma_1, sigma_2) V^T).
+// The P-NDF integrates over the probes' Gaussians, not over the pixel's image: where they reach further than the
+// image (the 0.5-texel floor under magnification; a minor axis thinner than the probe's box width, sqrt(12)
+// sigma_p), the field is spread over the footprint actually integrated, sigma_k replaced by
+// max(sigma_k, sqrt(12) sigma_p), so that s still sweeps the pixel's own range S [-1/2, 1/2]^2 and no more.
+// With the footprint equal to the pixel's image K is S M^-1 exactly; singular M (an edge-on pixel) stays finite
+// through that floor; M = 0 or non-finite M or S (grazing rays) gives K = 0, one half vector per footprint.
 #pragma once
 
 #include <cstdint>
@@ -36,5 +46,9 @@ Mat2 glint_tangent_jacobian(const Mat2& target_jacobian, uint32_t width, uint32_
 // The footprint of one probe at uv standing for a box of `box_width` texels (above). A non-finite width (a grazing
 // ray) gives a non-finite sigma, which footprint_texels() refuses: the caller skips such pixels.
 GlintFootprint glint_probe_footprint(const Vec2& uv, double box_width, uint32_t width, uint32_t height);
+// K = ds/du in target texels (above) from the half vector's steps S and the uv steps duv/dx, duv/dy of one pixel,
+// for probes of sigma_p = probe_sigma texels.
+Mat2 glint_half_vector_slope(const Mat2& steps, const Vec2& duv_dx, const Vec2& duv_dy, double probe_sigma,
+                             uint32_t width, uint32_t height);
 
 }  // namespace mbk

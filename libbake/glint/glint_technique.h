@@ -108,5 +108,11 @@ inline constexpr double kGlintSubElementSigmaTexels = kGlintElementSigmaTexels /
 inline constexpr double kGlintSpatialCutoffSigmas = 3.0;
 inline constexpr double kGlintNormalCutoffSigmas = 4.0;
 inline constexpr double kGlintFootprintCutoffSigmas = 3.0;
+// How far a texel's element reaches from the texel's centre per axis: its farthest sub-element centre
+// (1/2 - 1/(2K)) plus that sub-element's spatial cut-off (0.8995 texels for K = 2). The RMQ leaf intervals
+// hold the field over this square (element_normal_bounds.h); the P-NDF bounds the half vector's slope field
+// over it (glint_pndf.h).
+inline constexpr double kGlintElementReachTexels =
+    0.5 - 0.5 / kGlintSubElementsPerAxis + kGlintSpatialCutoffSigmas * kGlintSubElementSigmaTexels;
 
 }  // namespace mbk

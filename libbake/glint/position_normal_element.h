@@ -27,10 +27,10 @@ namespace mbk {
 struct GlintFootprint {
   Vec2 center;         // c, target texels
   double sigma = 1.0;  // sigma_p, target texels (> 0)
-  // How the pixel's half vector sweeps in s: the covariance of s over the pixel (normal units^2, symmetric,
-  // positive semi-definite). The P-NDF evaluates its elements with the normal covariance sigma_r^2 I + this in
-  // place of sigma_r^2 I (glint_pndf.h, "Directional spread").
-  Mat2 sweep = Mat2::Zero();
+  // How the pixel's half vector moves across the footprint: ds/du, normal units per target texel (finite). The
+  // P-NDF at s is then the mean over the footprint of the NDF at s + slope (u - center) at each point u
+  // (glint_pndf.h, "The half vector's slope field"); 0 for one half vector over the whole footprint.
+  Mat2 slope = Mat2::Zero();
 };
 
 struct PositionNormalElement {

@@ -139,13 +139,10 @@ TEST(GlintsEffect, ReferenceUsesTheAssetsKnots) {
 }
 
 // The hard case of shading once per pixel: a flat map (one normal, so D_P is exactly the intrinsic Gaussian)
-// under a point light whose highlight is narrower than a pixel. The P-NDF integrates positions, not the half
-// vector's sweep over the pixel (glint_pndf.h, "Directional spread"): with the sweep added to sigma_r and 16
-// samples per pixel the effect must match a 16 x 16-ray reference on 4 x 4 blocks within twice that
-// reference's own noise floor (another jitter seed) plus 1% (without the sweep: 0.0695 against 0.0214). Measured
-// at 96 x 54 on the glints scene's plane, 8 x 8 blocks: 1 sample per pixel gave 0.139 without the sweep and
-// 0.110 with it, 4 samples 0.044, 16 samples 0.0076 (0.012 without it), the floor 0.0010 there: an isotropic
-// Gaussian is not the pixel's box, so the sweep narrows the gap without closing it.
+// under a point light whose highlight is narrower than a pixel. The P-NDF integrates positions; the half vector's
+// move across the pixel is its slope field (glint_pndf.h) over sub-pixel cells (pixel_sweep.h). With 16 samples per
+// pixel the effect must match a 16 x 16-ray reference on 4 x 4 blocks within twice that reference's own noise floor
+// (another jitter seed) plus 1% (without any sweep: 0.0695 against 0.0214; measured now 0.0101 against 0.0137).
 TEST(GlintsEffect, FlatMapMatchesItsReference) {
   ScratchDir dir("glints_flat");
   testing::write_normal_map(dir / "flat.exr", 16, 16, [](uint32_t, uint32_t) { return Vec3(0, 0, 1); });
@@ -188,10 +185,10 @@ TEST(GlintsEffect, GrazingHighlightStaysWhereTheReferenceHasIt) {
   // A flat map seen 6 degrees above the plane with a point light low behind the mirror point: across the view the
   // half vector sweeps ~8x faster per pixel than along it. With that sweep taken isotropic (its mean variance in
   // both components), the effect streaked the highlight up to the horizon and lit its row brightest, where the
-  // reference has nothing (block L1 1.29 at 1 spp against 32 x 32 rays); as one Gaussian of its covariance it
-  // stayed in place but 12-45% dark (the Riemann sum of pixel_sweep.h: 0.39); cut into cells it is 0.021 at 1 spp
-  // and 0.004 at 4 spp (two 8 x 8-ray references differ by 0.05). Asserted: the brightest row, and the highlight's
-  // energy (rows where the reference exceeds 10% of its peak; measured 1.10 of an 8 x 8-ray reference).
+  // reference has nothing (block L1 1.29 at 1 spp against 32 x 32 rays); as one Gaussian over the pixel it stayed
+  // in place but 12-45% dark (pixel_sweep.h: the Riemann sum of a Gaussian footprint). Now the slope field over
+  // sub-pixel cells (measured energy 1.08, brightest row 17 against 18). Asserted: the brightest row, and the
+  // highlight's energy (rows where the reference exceeds 10% of its peak) against an 8 x 8-ray reference.
   ScratchDir dir("glints_grazing");
   const Scene scene = flat_glint_scene(
       dir, {{"position", {0, 0.35, 3}}, {"look_at", {0, 0, -2}}, {"fov_y", 30}, {"width", 48}, {"height", 32}},

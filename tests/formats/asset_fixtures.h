@@ -91,25 +91,29 @@ inline AssetWriter mip_writer(uint32_t w, uint32_t h, size_t dropped = 0, const 
 inline std::vector<uint8_t> valid_mip_bytes(uint32_t w = 5, uint32_t h = 3) { return mip_writer(w, h).serialize(); }
 
 // --- corruption helpers -------------------------------------------------------------------------------
-inline uint64_t section_table_offset(const std::vector<uint8_t>& f) { return load_le<uint64_t>(&f[40]); }
+inline uint64_t section_table_offset(const std::vector<uint8_t>& f) {
+  return load_le<uint64_t>(&f[header_field::section_table_offset]);
+}
 inline uint64_t entry_offset(const std::vector<uint8_t>& f, size_t i) {
   return section_table_offset(f) + i * kSectionEntrySize;
 }
 inline uint64_t section_data_offset(const std::vector<uint8_t>& f, size_t i) {
-  return load_le<uint64_t>(&f[entry_offset(f, i) + 88]);
+  return load_le<uint64_t>(&f[entry_offset(f, i) + entry_field::offset]);
 }
 
 // Recomputes section i's checksum after its data changed, then the header's.
 inline void reseal_section(std::vector<uint8_t>& f, size_t i) {
   uint64_t e = entry_offset(f, i);
-  uint64_t off = load_le<uint64_t>(&f[e + 88]), len = load_le<uint64_t>(&f[e + 96]);
-  store_le<uint64_t>(&f[e + 104], checksum_of(&f[off], len));
+  uint64_t off = load_le<uint64_t>(&f[e + entry_field::offset]),
+           len = load_le<uint64_t>(&f[e + entry_field::byte_length]);
+  store_le<uint64_t>(&f[e + entry_field::checksum], checksum_of(&f[off], len));
   reseal_header(f);
 }
 
 // Replaces the metadata JSON (same length required by the layout: pads with spaces), resealing.
 inline void replace_metadata(std::vector<uint8_t>& f, const std::string& json) {
-  uint64_t meta_off = load_le<uint64_t>(&f[24]), meta_size = load_le<uint64_t>(&f[32]);
+  uint64_t meta_off = load_le<uint64_t>(&f[header_field::metadata_offset]);
+  uint64_t meta_size = load_le<uint64_t>(&f[header_field::metadata_size]);
   std::string text = json;
   if (text.size() > meta_size) throw std::runtime_error("replacement metadata too long");
   text.resize(meta_size, ' ');
@@ -127,7 +131,8 @@ inline std::vector<uint8_t> with_f32_element(std::vector<uint8_t> f, size_t sect
 // `f` with `edit` applied to its metadata "parameters" (no longer than before), resealed.
 inline std::vector<uint8_t> with_parameters_edited(std::vector<uint8_t> f,
                                                    const std::function<void(nlohmann::json&)>& edit) {
-  const uint64_t meta_off = load_le<uint64_t>(&f[24]), meta_size = load_le<uint64_t>(&f[32]);
+  const uint64_t meta_off = load_le<uint64_t>(&f[header_field::metadata_offset]);
+  const uint64_t meta_size = load_le<uint64_t>(&f[header_field::metadata_size]);
   nlohmann::json m = nlohmann::json::parse(std::string(f.begin() + meta_off, f.begin() + meta_off + meta_size));
   edit(m["parameters"]);
   replace_metadata(f, m.dump());

@@ -59,6 +59,19 @@ Bytes with_level_texel(size_t level, size_t texel, std::function<void(float*)> c
   return f;
 }
 
+// A valid file whose metadata text (with `conventions` emptied, to make room) is changed by `edit`, resealed.
+Bytes with_metadata_text(const std::function<void(std::string&)>& edit) {
+  Bytes f = test::valid_mip_bytes();
+  const uint64_t offset = load_le<uint64_t>(&f[header_field::metadata_offset]);
+  auto m = nlohmann::json::parse(f.begin() + offset,
+                                 f.begin() + offset + load_le<uint64_t>(&f[header_field::metadata_size]));
+  m["conventions"] = nlohmann::json::object();
+  std::string text = m.dump();
+  edit(text);
+  test::replace_metadata(f, text);
+  return f;
+}
+
 std::vector<CorruptCase> corrupt_cases() {
   auto valid = [] { return test::valid_mip_bytes(); };
   auto meta_text = [](const Bytes& f) {
@@ -94,6 +107,14 @@ std::vector<CorruptCase> corrupt_cases() {
        [&] {
          Bytes f = valid();
          f[first_padding_byte(f)] = 1;
+         return f;
+       }},
+      {"TrailingZeroBytes", 1007,  // validate accepted them before the spec said where a file ends
+       [&] {
+         Bytes f = valid();
+         f.resize(f.size() + 64, 0);
+         store_le<uint64_t>(&f[header_field::file_size], f.size());
+         reseal_header(f);
          return f;
        }},
       {"NewerMajor", 2001,
@@ -150,6 +171,14 @@ std::vector<CorruptCase> corrupt_cases() {
          Bytes f = valid();
          test::replace_metadata(f, "[1, 2]");
          return f;
+       }},
+      {"MetadataByteOrderMark", 2009,
+       [&] { return with_metadata_text([](std::string& t) { t.insert(0, "\xEF\xBB\xBF"); }); }},
+      {"MetadataDuplicateKey", 2015,  // the first "kind" of two; nlohmann alone would keep the last
+       [&] { return with_metadata_text([](std::string& t) { t.insert(1, R"("kind":"mip",)"); }); }},
+      {"MetadataNestedDuplicateKey", 2015,
+       [&] {
+         return with_metadata_text([](std::string& t) { t.insert(t.find(R"("parameters":{)") + 14, R"("width":5,)"); });
        }},
       {"MetadataMissingKey", 2010,
        [&] {
@@ -251,6 +280,16 @@ std::vector<CorruptCase> corrupt_cases() {
        [&] {
          Bytes f = valid();
          store_le<uint64_t>(&f[entry_offset(f, 1) + 88], section_data_offset(f, 0));
+         reseal_header(f);
+         return f;
+       }},
+      {"EmptySectionInsideAnother", 3009,  // an empty section is a point: at a region's start or end, not inside
+       [&] {
+         AssetWriter w = test::mip_writer(5, 3);
+         w.add<float>("empty", {0}, std::vector<float>{});
+         Bytes f = w.serialize();
+         // level_0 holds 180 bytes: 64 bytes in is strictly inside it
+         store_le<uint64_t>(&f[entry_offset(f, 3) + entry_field::offset], section_data_offset(f, 0) + 64);
          reseal_header(f);
          return f;
        }},

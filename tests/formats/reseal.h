@@ -17,14 +17,15 @@ struct RecordedRegions {
   uint64_t table_size() const { return entry_count * entry_size; }  // both < 2^32: no overflow
 };
 inline RecordedRegions recorded_regions(const std::vector<uint8_t>& f) {
-  return {load_le<uint64_t>(&f[24]), load_le<uint64_t>(&f[32]), load_le<uint64_t>(&f[40]), load_le<uint32_t>(&f[48]),
-          load_le<uint32_t>(&f[52])};
+  return {load_le<uint64_t>(&f[header_field::metadata_offset]), load_le<uint64_t>(&f[header_field::metadata_size]),
+          load_le<uint64_t>(&f[header_field::section_table_offset]), load_le<uint32_t>(&f[header_field::section_count]),
+          load_le<uint32_t>(&f[header_field::section_entry_size])};
 }
 
 // Recomputes the header checksum of `f`, whose metadata and section table must lie inside it.
 inline void reseal_header(std::vector<uint8_t>& f) {
   const RecordedRegions r = recorded_regions(f);
-  store_le<uint64_t>(&f[56],
+  store_le<uint64_t>(&f[header_field::checksum],
                      header_checksum(f.data(), r.metadata_offset, r.metadata_size, r.table_offset, r.table_size()));
 }
 
@@ -40,8 +41,9 @@ inline std::vector<uint8_t> resealed(std::vector<uint8_t> f) {
   if (r.entry_size >= kSectionEntrySize)
     for (uint64_t i = 0; i < r.entry_count; ++i) {
       uint8_t* e = &f[r.table_offset + i * r.entry_size];
-      const uint64_t off = load_le<uint64_t>(e + 88), len = load_le<uint64_t>(e + 96);
-      if (off <= n && len <= n - off) store_le<uint64_t>(e + 104, checksum_of(f.data() + off, len));
+      const uint64_t off = load_le<uint64_t>(e + entry_field::offset),
+                     len = load_le<uint64_t>(e + entry_field::byte_length);
+      if (off <= n && len <= n - off) store_le<uint64_t>(e + entry_field::checksum, checksum_of(f.data() + off, len));
     }
   reseal_header(f);
   return f;
