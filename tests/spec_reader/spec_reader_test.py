@@ -170,7 +170,8 @@ def validate_ids(mb, folder, data):
     with open(path, "wb") as f:
         f.write(data)
     r = subprocess.run([mb.exe, "validate", "--format", "json", path], capture_output=True, text=True)
-    return sorted({m["id"] for m in json.loads(r.stdout)["messages"] if m["severity"] == "error"})
+    (result,) = json.loads(r.stdout)["files"]  # microbake.validate/1: one result per file
+    return sorted({m["id"] for m in result["messages"] if m["severity"] == "error"})
 
 
 def check_rule_cases(mb, folder, mip_bytes):
