@@ -41,12 +41,12 @@ std::string expand(std::string s) {
   return s;
 }
 
+using mbk::test::file_text;
 using mbk::test::ShellRun;
-using mbk::test::slurp;
 
 ShellRun run_shell(const std::string& command) { return mbk::test::run_shell(command, scratch_dir()); }
 
-json load_cases_file() { return json::parse(slurp(kCasesFile)); }
+json load_cases_file() { return json::parse(file_text(kCasesFile)); }
 
 struct CliCase {
   std::string name;
@@ -136,7 +136,7 @@ TEST_P(CliCaseTest, Behaves) {
       std::ofstream(golden) << actual.dump(2) << "\n";
     } else {
       ASSERT_TRUE(fs::exists(golden)) << golden << " missing: run with MICROBAKE_UPDATE_GOLDEN=1 once and review it";
-      json expected = json::parse(slurp(golden));
+      json expected = json::parse(file_text(golden));
       ASSERT_TRUE(apply_mask(c, expected, &missing)) << "mask " << missing << " is not in " << golden;
       EXPECT_EQ(actual, expected) << "differs from " << golden << " (MICROBAKE_UPDATE_GOLDEN=1 rewrites it)";
     }

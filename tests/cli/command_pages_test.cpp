@@ -17,8 +17,8 @@
 
 namespace {
 namespace fs = std::filesystem;
+using mbk::test::file_text;
 using mbk::test::run_shell;
-using mbk::test::slurp;
 
 const std::string kSourceDir = MICROBAKE_SOURCE_DIR;
 
@@ -79,11 +79,11 @@ TEST(CommandPages, EveryCommandHasAPageThatListsItsOptionsAndExamples) {
   const mbk::test::ScratchDir dir;
   const std::vector<std::string> commands = mbk::test::microbake_commands(MICROBAKE_EXE, dir.path());
   ASSERT_GE(commands.size(), 18u);
-  const std::string readme = slurp(kSourceDir + "/README.md");
+  const std::string readme = file_text(kSourceDir + "/README.md");
   for (const std::string& command : commands) {
     const fs::path page_path = fs::path(kSourceDir) / "docs/commands" / (command + ".md");
     ASSERT_TRUE(fs::is_regular_file(page_path)) << command << " has no page " << page_path;
-    const std::string page = slurp(page_path);
+    const std::string page = file_text(page_path);
     EXPECT_EQ(page.rfind("# `microbake " + command + "`", 0), 0u) << page_path << " must open with its command";
     const auto sections = page_sections(page);
     for (const char* heading : {"Synopsis", "Description", "Options", "Examples", "Exit status"})

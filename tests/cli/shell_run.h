@@ -5,20 +5,12 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
-namespace mbk::test {
+#include "tests/file_contents.h"
 
-// A file's bytes ("" when it cannot be read).
-inline std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+namespace mbk::test {
 
 struct ShellRun {
   int exit_code;  // 128 + the signal when a signal ended it
@@ -31,7 +23,7 @@ inline ShellRun run_shell(const std::string& command, const std::filesystem::pat
   const std::string full =
       "cd '" + folder.string() + "' && ( " + command + " ) </dev/null >'" + out.string() + "' 2>'" + err.string() + "'";
   const int status = std::system(full.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), slurp(out), slurp(err)};
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), file_text(out), file_text(err)};
 }
 
 // The command names `microbake help` lists under "Commands:" (`exe` is the microbake executable).

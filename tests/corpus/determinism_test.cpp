@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <map>
 
 #include "tests/corpus/run_microbake.h"
@@ -53,11 +54,11 @@ test::ScratchDir* Determinism::dir_ = nullptr;
 std::map<std::string, std::string> contents(const fs::path& root) {
   std::map<std::string, std::string> files;
   if (fs::is_regular_file(root)) {
-    files[""] = test::slurp(root);
+    files[""] = test::file_text(root);
     return files;
   }
   for (const auto& e : fs::recursive_directory_iterator(root))
-    if (e.is_regular_file()) files[fs::relative(e.path(), root).string()] = test::slurp(e.path());
+    if (e.is_regular_file()) files[fs::relative(e.path(), root).string()] = test::file_text(e.path());
   return files;
 }
 

@@ -53,7 +53,7 @@ class KillTest : public ::testing::Test {
   std::string complete_output(const std::vector<std::string>& args, const std::string& out) {
     const test::Run r = test::run_microbake(with_output(args, out), dir_.path());
     EXPECT_EQ(r.exit_code, 0) << r.err;
-    return test::slurp(dir_.path() / out);
+    return test::file_text(dir_.path() / out);
   }
   test::ScratchDir dir_{"kill"};
 };
@@ -95,7 +95,7 @@ TEST_F(KillTest, SigkillLeavesTheOldFileOrTheCompleteNewOne) {
       std::this_thread::sleep_for(std::chrono::microseconds(int64_t(fraction * run_ms * 1000.0)));
       ::kill(child, SIGKILL);
       test::wait_for(child);
-      const std::string now = test::slurp(dir_.path() / w.destination);
+      const std::string now = test::file_text(dir_.path() / w.destination);
       EXPECT_TRUE(now == old_bytes || now == new_bytes)
           << "trial " << t << " (killed at " << fraction * 100 << "% of a run): the destination is neither the old "
           << "file nor the complete new one (" << now.size() << " bytes)";
@@ -125,7 +125,7 @@ TEST_F(KillTest, RacingWritersLeaveOneCompleteFile) {
     const test::Run r1 = test::wait_for(first), r2 = test::wait_for(second);
     EXPECT_EQ(r1.exit_code, 0);
     EXPECT_EQ(r2.exit_code, 0);
-    const std::string now = test::slurp(dir_.path() / "race.mbk");
+    const std::string now = test::file_text(dir_.path() / "race.mbk");
     EXPECT_TRUE(now == a_bytes || now == b_bytes) << "round " << round << ": " << now.size() << " bytes";
     EXPECT_EQ(temporaries_of(dir_.path(), "race.mbk"), 0u) << "round " << round;
   }
@@ -152,7 +152,7 @@ TEST_F(KillTest, RacingBakesOfOneSceneLeaveTheFilesOneBakeWrites) {
     size_t files = 0;
     for (const auto& e : fs::directory_iterator(dir_.path() / "solo")) {
       ++files;
-      EXPECT_EQ(test::slurp(dir_.path() / folder / e.path().filename()), test::slurp(e.path()))
+      EXPECT_EQ(test::file_text(dir_.path() / folder / e.path().filename()), test::file_text(e.path()))
           << "round " << round << ": " << e.path().filename();
     }
     EXPECT_EQ(files, 2u);  // sh, and the mip of toksvig and the baseline

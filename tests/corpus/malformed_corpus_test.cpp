@@ -585,8 +585,8 @@ TEST(MalformedCorpus, EveryCaseFailsCleanlyWithItsExitCode) {
       const CorpusCase& c = cases[first + k];
       SCOPED_TRACE(c.name);
       test::Run r = test::wait_for(running[k]);
-      r.out = test::slurp(corpus().path(".case" + std::to_string(k) + "_out"));
-      r.err = test::slurp(corpus().path(".case" + std::to_string(k) + "_err"));
+      r.out = test::file_text(corpus().path(".case" + std::to_string(k) + "_out"));
+      r.err = test::file_text(corpus().path(".case" + std::to_string(k) + "_err"));
       std::string command = "microbake";
       for (const std::string& a : c.args) command += " '" + (a.size() > 60 ? a.substr(0, 57) + "..." : a) + "'";
       EXPECT_FALSE(r.timed_out) << command << ": still running after " << kCaseSeconds << " s";

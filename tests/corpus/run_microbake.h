@@ -9,23 +9,16 @@
 
 #include <chrono>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include "tests/file_contents.h"
 
 namespace mbk::test {
 
 // Generous: the machine running CI may be busy; every run of the corpus takes well under 2 s.
 constexpr int kCaseSeconds = 60;
-
-inline std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 struct Run {
   int exit_code = -1;  // -1 when killed by a signal
@@ -81,8 +74,8 @@ inline Run wait_for(pid_t child, int seconds = kCaseSeconds) {
 // Runs the executable with `args` in `dir`, without a shell, killing it after kCaseSeconds.
 inline Run run_microbake(const std::vector<std::string>& args, const std::filesystem::path& dir) {
   Run r = wait_for(spawn_microbake(args, dir, ".run_stdout", ".run_stderr"));
-  r.out = slurp(dir / ".run_stdout");
-  r.err = slurp(dir / ".run_stderr");
+  r.out = file_text(dir / ".run_stdout");
+  r.err = file_text(dir / ".run_stderr");
   return r;
 }
 
