@@ -88,6 +88,14 @@ void NormalMapBakingCommand::check_inputs() { (void)input_.load_options(); }
 
 void NormalMapBakingCommand::load() { map_ = load_normal_map(input_.path, input_.load_options()); }
 
+LoadedNormalMap NormalMapBakingCommand::take_map() {
+  LoadedNormalMap taken = std::move(map_);
+  map_.map.width = taken.map.width;
+  map_.map.height = taken.map.height;
+  map_.record = taken.record;
+  return taken;
+}
+
 std::string NormalMapBakingCommand::map_size() const {
   return std::to_string(map_.map.width) + "x" + std::to_string(map_.map.height);
 }

@@ -76,6 +76,9 @@ class NormalMapBakingCommand : public BakingCommand {
 
   const NormalMapInput& input() const { return input_; }
   const LoadedNormalMap& map() const { return map_; }
+  // Moves the loaded map out, for a baker whose asset holds the map itself (mip: no second copy of the finest
+  // level); map() keeps the size and the record, its texels are then empty.
+  LoadedNormalMap take_map();
   // "WxH" of the loaded map.
   std::string map_size() const;
 

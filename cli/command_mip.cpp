@@ -12,7 +12,7 @@ class MipCommand : public NormalMapBakingCommand {
   MipCommand() : NormalMapBakingCommand("mip", "MIP pyramid asset (.mbk)") {}
 
  private:
-  void bake(Progress&) override { asset_ = bake_mip_asset(map()); }
+  void bake(Progress&) override { asset_ = bake_mip_asset(take_map()); }
 
   std::string summary() const override {
     return map_size() + ", " + std::to_string(mip_level_sizes(map().map.width, map().map.height).size()) + " levels";

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "formats/asset.h"
 #include "formats/error.h"
@@ -71,7 +72,7 @@ MomentPyramid build_moment_pyramid(const Driver& driver) {
     finest.pixels[2 * i] = d;
     finest.pixels[2 * i + 1] = float(double(d) * double(d));
   }
-  p.levels = build_box_pyramid(finest);
+  p.levels = build_box_pyramid(std::move(finest));
   return p;
 }
 

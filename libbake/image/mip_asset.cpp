@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace mbk {
 namespace {
@@ -27,13 +28,13 @@ nlohmann::json mip_statistics(const NormalPyramid& pyramid) {
 
 }  // namespace
 
-AssetWriter bake_mip_asset(const LoadedNormalMap& input) {
-  NormalPyramid pyramid = build_normal_pyramid(input.map);
+AssetWriter bake_mip_asset(LoadedNormalMap input) {
+  const uint32_t width = input.map.width, height = input.map.height;
+  NormalPyramid pyramid = build_normal_pyramid(std::move(input.map));
   if (pyramid.levels.empty()) throw Error(ExitCode::runtime_failure, "internal: empty normal map", input.record.path);
   nlohmann::json metadata;
   metadata["inputs"] = nlohmann::json::array({input.record.to_json()});
-  metadata["parameters"] = {
-      {"width", input.map.width}, {"height", input.map.height}, {"levels", uint32_t(pyramid.levels.size())}};
+  metadata["parameters"] = {{"width", width}, {"height", height}, {"levels", uint32_t(pyramid.levels.size())}};
   metadata["conventions"] = normal_map_conventions();
   metadata["conventions"]["levels"] =
       "level k is max(1, floor(W / 2^k)) x max(1, floor(H / 2^k)); texel i covers [i W / w_k, (i+1) W / w_k) "

@@ -11,6 +11,7 @@ namespace mbk {
 // Sections level_0 .. level_{L-1}, each f32 [height, width, 3]; metadata "parameters" {width, height,
 // levels}, the normal-map "conventions", and "statistics" per level: mean, minimum and maximum length of
 // the stored (unnormalised) mean normals, i.e. how much the normals under each texel disagree.
-AssetWriter bake_mip_asset(const LoadedNormalMap& input);
+// The map is taken by value: its texels become level_0 without a copy when the caller moves it in.
+AssetWriter bake_mip_asset(LoadedNormalMap input);
 
 }  // namespace mbk

@@ -115,8 +115,9 @@ void resolve_convention(NormalMap& map, const ConventionRequest& requested, Inpu
     decision = "as requested";
   }
   record.convention_evidence["decision"] = decision;
+  // One serial pass: a parallel loop of one texel per iteration would spend more on scheduling than on the work.
   if (used == YConvention::minus_y)
-    parallel_for(0, int64_t(map.texels.size()), [&](int64_t i) { map.texels[i].y() = -map.texels[i].y(); });
+    for (Vec3f& n : map.texels) n.y() = -n.y();
 }
 
 }  // namespace

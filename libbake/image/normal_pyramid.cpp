@@ -2,8 +2,11 @@
 // pyramid (box_pyramid.h) and taps (texture_taps.h) applied to the three components.
 #include "libbake/image/normal_pyramid.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
+#include <utility>
 
 #include "formats/error.h"
 #include "libbake/image/box_pyramid.h"
@@ -16,24 +19,24 @@ Vec3 texel(const NormalMap& level, uint32_t x, uint32_t row) { return level.at(x
 
 }  // namespace
 
-NormalPyramid build_normal_pyramid(const NormalMap& map) {
+NormalPyramid build_normal_pyramid(NormalMap map) {
   if (map.texels.size() != size_t(map.width) * map.height)
     throw Error(ExitCode::runtime_failure, "internal: normal map texel count does not match its size");
-  Image finest;
-  finest.width = map.width;
-  finest.height = map.height;
-  finest.channels = 3;
-  finest.pixels.resize(map.texels.size() * 3);
-  for (size_t i = 0; i < map.texels.size(); ++i)
-    for (int c = 0; c < 3; ++c) finest.pixels[3 * i + size_t(c)] = map.texels[i][c];
   NormalPyramid pyramid;
-  for (const Image& level : build_box_pyramid(finest)) {
+  if (map.texels.empty()) return pyramid;
+  // Vec3f is three packed floats, so the texels are the finest image's 3-channel pixels as they are.
+  static_assert(sizeof(Vec3f) == 3 * sizeof(float));
+  const std::span<const float> finest(reinterpret_cast<const float*>(map.texels.data()), 3 * map.texels.size());
+  std::vector<Image> coarser = build_coarser_levels(finest, map.width, map.height, 3);
+  pyramid.levels.reserve(1 + coarser.size());
+  pyramid.levels.push_back(std::move(map));
+  for (Image& level : coarser) {
     NormalMap n;
     n.width = level.width;
     n.height = level.height;
     n.texels.resize(size_t(n.width) * n.height);
-    for (size_t i = 0; i < n.texels.size(); ++i)
-      n.texels[i] = Vec3f(level.pixels[3 * i], level.pixels[3 * i + 1], level.pixels[3 * i + 2]);
+    std::copy(level.pixels.begin(), level.pixels.end(), reinterpret_cast<float*>(n.texels.data()));
+    level = Image{};  // released as soon as it is copied
     pyramid.levels.push_back(std::move(n));
   }
   return pyramid;

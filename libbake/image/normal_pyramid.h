@@ -14,7 +14,8 @@ struct NormalPyramid {
   std::vector<NormalMap> levels;  // levels[0] == the input map; texels of coarser levels are not unit length
 };
 
-NormalPyramid build_normal_pyramid(const NormalMap& map);
+// levels[0] is `map` itself (moved in when the caller passes an rvalue).
+NormalPyramid build_normal_pyramid(NormalMap map);
 
 // Trilinear lookup: bilinear within the two levels around `lod` (clamped to [0, levels-1]), wrapping at
 // the borders (tiling), blended linearly; uv in the conventions of normal_map.h. Returns the unnormalised
