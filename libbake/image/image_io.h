@@ -1,5 +1,7 @@
-// Every image microbake reads or writes goes through OpenImageIO, here. Pixels in memory are float,
-// interleaved, row-major with row 0 at the top.
+// Every image microbake reads or writes goes through OpenImageIO, behind these functions: in the module
+// libmicrobake_image_io.so that image_io.cpp loads on the first call (libbake/image/image_io_module.h), so that
+// commands that touch no image never load OpenImageIO. Pixels in memory are float, interleaved, row-major with
+// row 0 at the top.
 #pragma once
 
 #include <cstdint>
