@@ -54,81 +54,92 @@ uint32_t clamp_cell(double x, uint32_t cells) {
 
 double smoothstep(double t) { return t * t * (3.0 - 2.0 * t); }
 
-}  // namespace
+// The cell's sample at corner k (C0..C3: top-left, top-right, bottom-right, bottom-left).
+struct CellCorners {
+  uint32_t i[4], j[4];
+};
 
-CreaseSample reconstruct_crease(const CreaseField& f, double x, double y) {
-  CreaseSample out;
-  const uint32_t ci = clamp_cell(x, f.cells_x()), cj = clamp_cell(y, f.cells_y());
-  out.cell_i = ci;
-  out.cell_j = cj;
-  const double p[2] = {std::clamp(x - (double(ci) - 0.5), 0.0, 1.0), std::clamp(y - (double(cj) - 0.5), 0.0, 1.0)};
-  const CreaseCellEdges e = crease_cell_edges(f, ci, cj);
-  const uint32_t sample_i[4] = {ci, ci + 1, ci + 1, ci}, sample_j[4] = {cj, cj, cj + 1, cj + 1};
-  if (!(e.crossing[0] || e.crossing[1] || e.crossing[2] || e.crossing[3])) {
-    // No discontinuity touches the cell: bilinear interpolation (Sec. 4.3), continuous with the partition of
-    // a neighbour, which is linear along every edge without a crossing.
-    const double w[4] = {(1 - p[0]) * (1 - p[1]), p[0] * (1 - p[1]), p[0] * p[1], (1 - p[0]) * p[1]};
-    double g[2] = {0, 0}, side = 0;
-    out.distance = 0.0;
-    for (int k = 0; k < 4; ++k) {
-      const size_t s = f.sample_index(sample_i[k], sample_j[k]);
-      out.distance += w[k] * f.distance[s];
-      g[0] += w[k] * f.gradient[2 * s], g[1] += w[k] * f.gradient[2 * s + 1];
-      side += f.side[s];
-    }
-    const double glen = std::hypot(g[0], g[1]);
-    if (glen > 1e-12) out.gradient[0] = g[0] / glen, out.gradient[1] = g[1] / glen;
-    out.side = side >= 0 ? 1 : -1;
-    out.triangle = -1;
-    bilinear_normal(f, x, y, out.normal);
-    return out;
+CellCorners cell_corners(uint32_t ci, uint32_t cj) { return {{ci, ci + 1, ci + 1, ci}, {cj, cj, cj + 1, cj + 1}}; }
+
+// No discontinuity touches the cell: bilinear interpolation (Sec. 4.3), continuous with the partition of a
+// neighbour, which is linear along every edge without a crossing. p: the point in cell-local coordinates.
+void reconstruct_bilinear(const CreaseField& f, double x, double y, const double p[2], const CellCorners& c,
+                          CreaseSample& out) {
+  const double w[4] = {(1 - p[0]) * (1 - p[1]), p[0] * (1 - p[1]), p[0] * p[1], (1 - p[0]) * p[1]};
+  double g[2] = {0, 0}, side = 0;
+  out.distance = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    const size_t s = f.sample_index(c.i[k], c.j[k]);
+    out.distance += w[k] * f.distance[s];
+    g[0] += w[k] * f.gradient[2 * s], g[1] += w[k] * f.gradient[2 * s + 1];
+    side += f.side[s];
   }
+  const double glen = std::hypot(g[0], g[1]);
+  if (glen > 1e-12) out.gradient[0] = g[0] / glen, out.gradient[1] = g[1] / glen;
+  out.side = side >= 0 ? 1 : -1;
+  out.triangle = -1;
+  bilinear_normal(f, x, y, out.normal);
+}
 
-  // Vertices: C0..C3 (0..3), P0..P3 (4..7), E (8), in cell-local coordinates.
+// The partition of a cell with crossings (Sec. 4.2): vertices C0..C3 (0..3), P0..P3 (4..7) and E (8) in cell-local
+// coordinates; triangles T_k = (P_{k-1}, C_k, P_k) and I_k = (E, P_k, P_{k+1}); regions = triangles joined across
+// partition edges that are not segments.
+struct CellPartition {
   double pos[9][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  int tri[8][3];
+  double s02 = 0.0, s13 = 0.0;  // E = P0 + s02 (P2 - P0) = P1 + s13 (P3 - P1)
+  uint16_t seg = 0;             // the segment bits of the cell's signature
+  UnionFind regions;
+};
+
+CellPartition cell_partition(const CreaseCellEdges& e) {
+  CellPartition c;
+  double(&pos)[9][2] = c.pos;
   for (int k = 0; k < 4; ++k) pos[4 + k][0] = e.px[k], pos[4 + k][1] = e.py[k];
-  // E = P0 + s (P2 - P0) = P1 + r (P3 - P1): P0P2 runs top to bottom, P1P3 right to left.
+  // P0P2 runs top to bottom, P1P3 right to left.
   const double ax = pos[6][0] - pos[4][0], ay = 1.0, bx = pos[7][0] - pos[5][0], by = pos[7][1] - pos[5][1];
   const double cx = pos[5][0] - pos[4][0], cy = pos[5][1] - pos[4][1];
   const double den = ax * by - ay * bx;  // never 0: P0P2 and P1P3 cross inside the cell
-  const double s02 = (cx * by - cy * bx) / den, s13 = (cx * ay - cy * ax) / den;
-  pos[8][0] = pos[4][0] + s02 * ax, pos[8][1] = s02;
+  c.s02 = (cx * by - cy * bx) / den, c.s13 = (cx * ay - cy * ax) / den;
+  pos[8][0] = pos[4][0] + c.s02 * ax, pos[8][1] = c.s02;
+  for (int k = 0; k < 4; ++k) {
+    c.tri[k][0] = 4 + (k + 3) % 4, c.tri[k][1] = k, c.tri[k][2] = 4 + k;
+    c.tri[4 + k][0] = 8, c.tri[4 + k][1] = 4 + k, c.tri[4 + k][2] = 4 + (k + 1) % 4;
+  }
+  c.seg = e.mask & kCreaseSegmentBits;
+  for (int k = 0; k < 4; ++k) {
+    if (!((c.seg >> ((k + 3) % 4)) & 1u)) c.regions.join(k, 4 + (k + 3) % 4);  // T_k - I_{k-1} across P_{k-1}P_k
+    const int spoke = (k + 1) % 4;                                             // I_k - I_{k+1} across E P_{k+1}
+    const bool cut = ((c.seg >> 4) & 1u && spoke % 2 == 0) || ((c.seg >> 5) & 1u && spoke % 2 == 1);
+    if (!cut) c.regions.join(4 + k, 4 + spoke);
+  }
+  return c;
+}
 
-  // Triangles: T_k = (P_{k-1}, C_k, P_k), I_k = (E, P_k, P_{k+1}).
-  int tri[8][3];
-  for (int k = 0; k < 4; ++k) {
-    tri[k][0] = 4 + (k + 3) % 4, tri[k][1] = k, tri[k][2] = 4 + k;
-    tri[4 + k][0] = 8, tri[4 + k][1] = 4 + k, tri[4 + k][2] = 4 + (k + 1) % 4;
-  }
-  // Regions: join across partition edges that are not segments.
-  const uint16_t seg = e.mask & kCreaseSegmentBits;
-  UnionFind regions;
-  for (int k = 0; k < 4; ++k) {
-    if (!((seg >> ((k + 3) % 4)) & 1u)) regions.join(k, 4 + (k + 3) % 4);  // T_k - I_{k-1} across P_{k-1}P_k
-    const int spoke = (k + 1) % 4;                                         // I_k - I_{k+1} across E P_{k+1}
-    const bool cut = ((seg >> 4) & 1u && spoke % 2 == 0) || ((seg >> 5) & 1u && spoke % 2 == 1);
-    if (!cut) regions.join(4 + k, 4 + spoke);
-  }
-  // The point's triangle: the one where its smallest barycentric coordinate is largest.
+// The point's triangle: the one where its smallest barycentric coordinate is largest; lambda its coordinates there.
+int containing_triangle(const CellPartition& c, const double p[2], double lambda[3]) {
   int best = 0;
-  double lambda[3] = {0, 0, 0}, best_min = -1e300;
+  double best_min = -1e300;
   for (int t = 0; t < 8; ++t) {
     double l[3];
-    barycentric(p, pos[tri[t][0]], pos[tri[t][1]], pos[tri[t][2]], l);
+    barycentric(p, c.pos[c.tri[t][0]], c.pos[c.tri[t][1]], c.pos[c.tri[t][2]], l);
     const double m = std::min({l[0], l[1], l[2]});
     if (m > best_min) best_min = m, best = t, std::copy(l, l + 3, lambda);
   }
-  out.triangle = best;
-  const int region = regions.find(best);
-  bool reach[4];
-  for (int k = 0; k < 4; ++k) reach[k] = regions.find(k) == region;
+  return best;
+}
 
+// The values at the partition's vertices C0..C3 and P0..P3 as seen from `region`: the corners it reaches keep their
+// samples; an edge point interpolates the corners of its edge that the region reaches (or takes the one, or the
+// region's mean), with distance 0 where a crease crosses the edge. Sets `side` from the reached corners.
+void vertex_values(const CreaseField& f, const CreaseCellEdges& e, const CellCorners& cc, const bool reach[4],
+                   Values value[9], int& side) {
   Values corner[4];
   for (int k = 0; k < 4; ++k) {
-    const size_t s = f.sample_index(sample_i[k], sample_j[k]);
+    const size_t s = f.sample_index(cc.i[k], cc.j[k]);
     corner[k].d = f.distance[s];
     corner[k].g[0] = f.gradient[2 * s], corner[k].g[1] = f.gradient[2 * s + 1];
-    const float* n = f.sample_normal(sample_i[k], sample_j[k]);
+    const float* n = f.sample_normal(cc.i[k], cc.j[k]);
     for (int c = 0; c < 3; ++c) corner[k].n[c] = n[c];
   }
   Values region_mean;
@@ -136,13 +147,11 @@ CreaseSample reconstruct_crease(const CreaseField& f, double x, double y) {
   for (int k = 0; k < 4; ++k)
     if (reach[k]) {
       accumulate(region_mean, corner[k], 1.0);
-      side_sum += f.side[f.sample_index(sample_i[k], sample_j[k])];
+      side_sum += f.side[f.sample_index(cc.i[k], cc.j[k])];
       ++reached;
     }
   if (reached) region_mean = scaled(region_mean, 1.0 / reached);
-  out.side = side_sum >= 0 ? 1 : -1;
-
-  Values value[9];
+  side = side_sum >= 0 ? 1 : -1;
   for (int k = 0; k < 4; ++k) value[k] = corner[k];
   for (int k = 0; k < 4; ++k) {
     const int a = k, b = (k + 1) % 4;
@@ -159,40 +168,70 @@ CreaseSample reconstruct_crease(const CreaseField& f, double x, double y) {
     v.d = e.crossing[k] ? 0.0 : (1 - t) * corner[a].d + t * corner[b].d;
     value[4 + k] = v;
   }
-  // E, seen from the region (only needed inside an inner triangle).
-  if (best >= 4) {
-    const bool through02 = (seg >> 4) & 1u, through13 = (seg >> 5) & 1u;
-    bool touches[4] = {false, false, false, false};
+}
+
+// E's value seen from `region` (needed only inside an inner triangle): along the crease through it when the region
+// lies on both of its ends, else the mean of the edge points the region touches; distance 0 on a crease.
+Values centre_value(const CellPartition& c, int region, const Values value[9]) {
+  const bool through02 = (c.seg >> 4) & 1u, through13 = (c.seg >> 5) & 1u;
+  bool touches[4] = {false, false, false, false};
+  UnionFind regions = c.regions;
+  for (int k = 0; k < 4; ++k)
+    if (regions.find(4 + k) == region) touches[k] = touches[(k + 1) % 4] = true;
+  Values v;
+  if (!through02 && !through13) {
+    v = lerp(lerp(value[4], value[6], c.s02), lerp(value[5], value[7], c.s13), 0.5);
+  } else if (through02 && touches[0] && touches[2]) {
+    v = lerp(value[4], value[6], c.s02);
+  } else if (through13 && touches[1] && touches[3]) {
+    v = lerp(value[5], value[7], c.s13);
+  } else {
+    int n = 0;
     for (int k = 0; k < 4; ++k)
-      if (regions.find(4 + k) == region) touches[k] = touches[(k + 1) % 4] = true;
-    Values v;
-    if (!through02 && !through13) {
-      v = lerp(lerp(value[4], value[6], s02), lerp(value[5], value[7], s13), 0.5);
-    } else if (through02 && touches[0] && touches[2]) {
-      v = lerp(value[4], value[6], s02);
-    } else if (through13 && touches[1] && touches[3]) {
-      v = lerp(value[5], value[7], s13);
-    } else {
-      int n = 0;
-      for (int k = 0; k < 4; ++k)
-        if (touches[k]) accumulate(v, value[4 + k], 1.0), ++n;
-      v = scaled(v, 1.0 / n);
-    }
-    if (through02 || through13) v.d = 0.0;
-    value[8] = v;
+      if (touches[k]) accumulate(v, value[4 + k], 1.0), ++n;
+    v = scaled(v, 1.0 / n);
   }
+  if (through02 || through13) v.d = 0.0;
+  return v;
+}
+
+}  // namespace
+
+CreaseSample reconstruct_crease(const CreaseField& f, double x, double y) {
+  CreaseSample out;
+  const uint32_t ci = clamp_cell(x, f.cells_x()), cj = clamp_cell(y, f.cells_y());
+  out.cell_i = ci;
+  out.cell_j = cj;
+  const double p[2] = {std::clamp(x - (double(ci) - 0.5), 0.0, 1.0), std::clamp(y - (double(cj) - 0.5), 0.0, 1.0)};
+  const CreaseCellEdges e = crease_cell_edges(f, ci, cj);
+  const CellCorners corners = cell_corners(ci, cj);
+  if (!(e.crossing[0] || e.crossing[1] || e.crossing[2] || e.crossing[3])) {
+    reconstruct_bilinear(f, x, y, p, corners, out);
+    return out;
+  }
+  CellPartition c = cell_partition(e);
+  double lambda[3] = {0, 0, 0};
+  const int best = containing_triangle(c, p, lambda);
+  out.triangle = best;
+  const int region = c.regions.find(best);
+  bool reach[4];
+  for (int k = 0; k < 4; ++k) reach[k] = c.regions.find(k) == region;
+  Values value[9];
+  vertex_values(f, e, corners, reach, value, out.side);
+  if (best >= 4) value[8] = centre_value(c, region, value);
+
   Values r;
-  for (int c = 0; c < 3; ++c) accumulate(r, value[tri[best][c]], lambda[c]);
+  for (int k = 0; k < 3; ++k) accumulate(r, value[c.tri[best][k]], lambda[k]);
   out.distance = std::max(0.0, r.d);
   const double glen = std::hypot(r.g[0], r.g[1]);
   if (glen > 1e-12) {
     out.gradient[0] = r.g[0] / glen, out.gradient[1] = r.g[1] / glen;
   } else {  // opposite gradients cancelling (on a medial axis): take the nearest vertex's
-    const int v = tri[best][std::max_element(lambda, lambda + 3) - lambda];
+    const int v = c.tri[best][std::max_element(lambda, lambda + 3) - lambda];
     out.gradient[0] = value[v].g[0], out.gradient[1] = value[v].g[1];
   }
   const double nlen = std::sqrt(r.n[0] * r.n[0] + r.n[1] * r.n[1] + r.n[2] * r.n[2]);
-  for (int c = 0; c < 3; ++c) out.normal[c] = nlen > 0.0 ? r.n[c] / nlen : (c == 2 ? 1.0 : 0.0);
+  for (int k = 0; k < 3; ++k) out.normal[k] = nlen > 0.0 ? r.n[k] / nlen : (k == 2 ? 1.0 : 0.0);
   return out;
 }
 

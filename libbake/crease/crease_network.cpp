@@ -45,130 +45,164 @@ nlohmann::json SimplifyStatistics::to_json() const {
           {"deleted_segments", deleted_segments}};
 }
 
-SimplifyStatistics simplify_curves(const CurveSet& curves, CreaseField& field) {
-  SimplifyStatistics stats;
-  std::vector<EdgeCrossings> h(field.crossing_h.size()), v(field.crossing_v.size());
-  std::vector<CellPieces> cells(field.segments.size());
-  std::vector<LineCrossing> crossings;
-  int64_t cx = 0, cy = 0;  // the walk's current cell
-  int entry = -1;          // the edge through which the walk entered it (-1: the curve starts in it)
-  int first_exit = -1;     // the edge through which the curve left its first cell
-  struct CurveEnd {
-    int64_t cell_x, cell_y;
-    int edge;       // the edge through which the curve leaves (outgoing) or enters the cell of its end point
-    bool outgoing;  // the curve starts here
-  };
+namespace {
+
+// The end of an open curve inside a cell, for the junctions.
+struct CurveEnd {
+  int64_t cell_x, cell_y;
+  int edge;       // the edge through which the curve leaves (outgoing) or enters the cell of its end point
+  bool outgoing;  // the curve starts here
+};
+
+// Walks the curves through the cells: records every crossing of a cell edge and, per cell, the pieces of curve
+// from the edge it entered by to the edge it left by (by edge pair), and where open curves end.
+class CurveWalk {
+ public:
+  explicit CurveWalk(const CreaseField& field)
+      : field_(field), h(field.crossing_h.size()), v(field.crossing_v.size()), cells(field.segments.size()) {}
+
+  // A polyline is walked as one path: a vertex inside a cell joins the piece coming in to the piece going out, so
+  // the cell keeps a segment from its entry edge to its exit edge.
+  void walk_curve(const CurvePolyline& curve, SimplifyStatistics& stats) {
+    CurveSet one;
+    one.curves.push_back(curve);
+    const std::vector<CurveSegment> segments = curve_segments(one);
+    stats.input_segments += segments.size();
+    cx_ = cell_of(curve.points.front().x(), field_.cells_x());
+    cy_ = cell_of(curve.points.front().y(), field_.cells_y());
+    const int64_t start_x = cx_, start_y = cy_;
+    entry_ = -1;
+    first_exit_ = -1;
+    for (const CurveSegment& seg : segments) walk_segment(seg, stats);
+    // A closed curve back in its first cell joins its last piece to its first.
+    if (curve.closed && entry_ >= 0 && first_exit_ >= 0 && cx_ == start_x && cy_ == start_y) {
+      add_piece(cx_, cy_, entry_, first_exit_);
+    } else {  // an open curve's ends inside cells, for the junctions
+      if (first_exit_ >= 0)
+        ends[{curve.points.front().x(), curve.points.front().y()}].push_back({start_x, start_y, first_exit_, true});
+      if (entry_ >= 0) ends[{curve.points.back().x(), curve.points.back().y()}].push_back({cx_, cy_, entry_, false});
+    }
+  }
+
+  // Junctions: curves whose ends are the same point join there. Every pair of their edges (distinct) becomes a
+  // piece of the junction's cell, from an incoming curve to an outgoing one; the two-per-cell rule keeps the best
+  // supported. (Deviation [Parilov05]: the paper converts segments one by one, so where separately listed segments
+  // meet inside a cell - a panel's corner and its mitre - the cell gets no segment and interpolates across the
+  // creases; test: CreaseNetwork.SegmentsMeetingInsideACellAreJoined.)
+  void join_curve_ends() {
+    for (const auto& [point, at] : ends)
+      for (size_t a = 0; a < at.size(); ++a)
+        for (size_t b = a + 1; b < at.size(); ++b) {
+          const CurveEnd& p = at[a].outgoing && !at[b].outgoing ? at[b] : at[a];
+          const CurveEnd& q = &p == &at[a] ? at[b] : at[a];
+          add_piece(p.cell_x, p.cell_y, p.edge, q.edge);
+        }
+  }
+
+  std::vector<EdgeCrossings> h, v;  // per horizontal / vertical cell edge
+  std::vector<CellPieces> cells;
   std::map<std::pair<double, double>, std::vector<CurveEnd>> ends;  // by end point
-  auto add_piece = [&](int from, int to) {
+
+ private:
+  void add_piece(int64_t x, int64_t y, int from, int to) {
     const int bit = crease_pair_bit(from, to);
     if (bit < 0) return;  // left through the edge it came in by (a polyline folding back): no segment
-    CellPieces& p = cells[field.cell_index(uint32_t(cx), uint32_t(cy))];
+    CellPieces& p = cells[field_.cell_index(uint32_t(x), uint32_t(y))];
     ++p.count[size_t(bit)];
     p.direction[size_t(bit)] += kCreasePairFirst[bit] == from ? 1 : -1;
-  };
-  auto walk = [&](const CurveSegment& seg) {
+  }
+
+  void walk_segment(const CurveSegment& seg, SimplifyStatistics& stats) {
     const double ax = seg.a.x(), ay = seg.a.y(), dx = seg.b.x() - ax, dy = seg.b.y() - ay;
-    const int64_t bx = cell_of(seg.b.x(), field.cells_x()), by = cell_of(seg.b.y(), field.cells_y());
-    crossings.clear();
+    const int64_t bx = cell_of(seg.b.x(), field_.cells_x()), by = cell_of(seg.b.y(), field_.cells_y());
+    crossings_.clear();
     // Lattice line i (sample column i) is x = i - 0.5; moving from cell c to c + 1 crosses line c + 1.
-    for (int64_t c = std::min(cx, bx); c < std::max(cx, bx); ++c) crossings.push_back({(c + 0.5 - ax) / dx, true});
-    for (int64_t c = std::min(cy, by); c < std::max(cy, by); ++c) crossings.push_back({(c + 0.5 - ay) / dy, false});
+    for (int64_t c = std::min(cx_, bx); c < std::max(cx_, bx); ++c) crossings_.push_back({(c + 0.5 - ax) / dx, true});
+    for (int64_t c = std::min(cy_, by); c < std::max(cy_, by); ++c) crossings_.push_back({(c + 0.5 - ay) / dy, false});
     // Order along the segment; at a lattice vertex the perturbation crosses the vertical line first when dx > 0.
-    std::sort(crossings.begin(), crossings.end(), [&](const LineCrossing& p, const LineCrossing& q) {
+    std::sort(crossings_.begin(), crossings_.end(), [&](const LineCrossing& p, const LineCrossing& q) {
       if (p.s != q.s) return p.s < q.s;
       if (p.vertical == q.vertical) return false;
       return p.vertical == (dx > 0.0);
     });
-    for (const LineCrossing& c : crossings) {
+    for (const LineCrossing& c : crossings_) {
       const double x = ax + c.s * dx, y = ay + c.s * dy;
       int exit, next_entry;
-      int64_t nx = cx, ny = cy;
+      int64_t nx = cx_, ny = cy_;
       if (c.vertical) {
         const bool right = dx > 0.0;
         exit = right ? 1 : 3;
         next_entry = right ? 3 : 1;
         nx += right ? 1 : -1;
-        v[field.v_edge_index(uint32_t(right ? cx + 1 : cx), uint32_t(cy))].add(clamp_t(y - (double(cy) - 0.5)));
+        v[field_.v_edge_index(uint32_t(right ? cx_ + 1 : cx_), uint32_t(cy_))].add(clamp_t(y - (double(cy_) - 0.5)));
       } else {
         const bool down = dy > 0.0;
         exit = down ? 2 : 0;
         next_entry = down ? 0 : 2;
         ny += down ? 1 : -1;
-        h[field.h_edge_index(uint32_t(cx), uint32_t(down ? cy + 1 : cy))].add(clamp_t(x - (double(cx) - 0.5)));
+        h[field_.h_edge_index(uint32_t(cx_), uint32_t(down ? cy_ + 1 : cy_))].add(clamp_t(x - (double(cx_) - 0.5)));
       }
       ++stats.input_crossings;
-      if (entry >= 0) add_piece(entry, exit);
-      if (first_exit < 0 && entry < 0) first_exit = exit;
-      cx = nx;
-      cy = ny;
-      entry = next_entry;
-    }
-  };
-  for (const CurvePolyline& curve : curves.curves) {
-    // A polyline is walked as one path: a vertex inside a cell joins the piece coming in to the piece going
-    // out, so the cell keeps a segment from its entry edge to its exit edge.
-    CurveSet one;
-    one.curves.push_back(curve);
-    const std::vector<CurveSegment> segments = curve_segments(one);
-    stats.input_segments += segments.size();
-    cx = cell_of(curve.points.front().x(), field.cells_x());
-    cy = cell_of(curve.points.front().y(), field.cells_y());
-    const int64_t start_x = cx, start_y = cy;
-    entry = -1;
-    first_exit = -1;
-    for (const CurveSegment& seg : segments) walk(seg);
-    // A closed curve back in its first cell joins its last piece to its first.
-    if (curve.closed && entry >= 0 && first_exit >= 0 && cx == start_x && cy == start_y) {
-      add_piece(entry, first_exit);
-    } else {  // an open curve's ends inside cells, for the junctions below
-      if (first_exit >= 0)
-        ends[{curve.points.front().x(), curve.points.front().y()}].push_back({start_x, start_y, first_exit, true});
-      if (entry >= 0) ends[{curve.points.back().x(), curve.points.back().y()}].push_back({cx, cy, entry, false});
+      if (entry_ >= 0) add_piece(cx_, cy_, entry_, exit);
+      if (first_exit_ < 0 && entry_ < 0) first_exit_ = exit;
+      cx_ = nx;
+      cy_ = ny;
+      entry_ = next_entry;
     }
   }
-  // Junctions: curves whose ends are the same point join there. Every pair of their edges (distinct) becomes a
-  // piece of the junction's cell, from an incoming curve to an outgoing one; the two-per-cell rule below keeps
-  // the best supported. (Deviation [Parilov05]: the paper converts segments one by one, so where separately
-  // listed segments meet inside a cell - a panel's corner and its mitre - the cell gets no segment and
-  // interpolates across the creases; test: CreaseNetwork.SegmentsMeetingInsideACellAreJoined.)
-  for (const auto& [point, at] : ends)
-    for (size_t a = 0; a < at.size(); ++a)
-      for (size_t b = a + 1; b < at.size(); ++b) {
-        const CurveEnd& p = at[a].outgoing && !at[b].outgoing ? at[b] : at[a];
-        const CurveEnd& q = &p == &at[a] ? at[b] : at[a];
-        cx = p.cell_x, cy = p.cell_y;
-        add_piece(p.edge, q.edge);
-      }
-  auto merge = [&](const std::vector<EdgeCrossings>& in, std::vector<float>& out) {
-    for (size_t e = 0; e < in.size(); ++e) {
-      if (!in[e].count) continue;
-      const float t = float(clamp_t(in[e].sum / in[e].count));
-      out[e] = std::clamp(t, kCreaseMinT, 1.0f - kCreaseMinT);
-      ++stats.crossed_edges;
-      if (in[e].count > 1) ++stats.merged_edges;
-      stats.max_merge_shift = std::max({stats.max_merge_shift, std::abs(in[e].min - t), std::abs(in[e].max - t)});
+
+  const CreaseField& field_;
+  std::vector<LineCrossing> crossings_;
+  int64_t cx_ = 0, cy_ = 0;  // the walk's current cell
+  int entry_ = -1;           // the edge through which the walk entered it (-1: the curve starts in it)
+  int first_exit_ = -1;      // the edge through which the curve left its first cell
+};
+
+// Each crossed edge's crossing: the mean of the curves' crossings there (merged when several cross it).
+void merge_edge_crossings(const std::vector<EdgeCrossings>& in, std::vector<float>& out, SimplifyStatistics& stats) {
+  for (size_t e = 0; e < in.size(); ++e) {
+    if (!in[e].count) continue;
+    const float t = float(clamp_t(in[e].sum / in[e].count));
+    out[e] = std::clamp(t, kCreaseMinT, 1.0f - kCreaseMinT);
+    ++stats.crossed_edges;
+    if (in[e].count > 1) ++stats.merged_edges;
+    stats.max_merge_shift = std::max({stats.max_merge_shift, std::abs(in[e].min - t), std::abs(in[e].max - t)});
+  }
+}
+
+// Each cell's signature: its best-supported edge pairs (the most pieces; ties in pair order), at most
+// kCreaseMaxSegmentsPerCell of them, each with the direction most of its pieces ran.
+uint16_t cell_signature(const CellPieces& cell, SimplifyStatistics& stats) {
+  std::array<int, 6> order = {0, 1, 2, 3, 4, 5};
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return cell.count[size_t(a)] > cell.count[size_t(b)]; });
+  uint16_t mask = 0;
+  uint32_t kept = 0;
+  for (int bit : order) {
+    if (!cell.count[size_t(bit)]) break;
+    if (kept == kCreaseMaxSegmentsPerCell) {
+      ++stats.deleted_segments;
+      continue;
     }
-  };
-  merge(h, field.crossing_h);
-  merge(v, field.crossing_v);
-  for (size_t c = 0; c < cells.size(); ++c) {
-    std::array<int, 6> order = {0, 1, 2, 3, 4, 5};
-    std::stable_sort(order.begin(), order.end(),
-                     [&](int a, int b) { return cells[c].count[size_t(a)] > cells[c].count[size_t(b)]; });
-    uint16_t mask = 0;
-    uint32_t kept = 0;
-    for (int bit : order) {
-      if (!cells[c].count[size_t(bit)]) break;
-      if (kept == kCreaseMaxSegmentsPerCell) {
-        ++stats.deleted_segments;
-        continue;
-      }
-      mask |= uint16_t(1u << bit);
-      if (cells[c].direction[size_t(bit)] < 0) mask |= uint16_t(1u << (8 + bit));
-      ++kept;
-    }
-    field.segments[c] = mask;
-    if (mask) ++stats.cells_with_segments;
+    mask |= uint16_t(1u << bit);
+    if (cell.direction[size_t(bit)] < 0) mask |= uint16_t(1u << (8 + bit));
+    ++kept;
+  }
+  return mask;
+}
+
+}  // namespace
+
+SimplifyStatistics simplify_curves(const CurveSet& curves, CreaseField& field) {
+  SimplifyStatistics stats;
+  CurveWalk walk(field);
+  for (const CurvePolyline& curve : curves.curves) walk.walk_curve(curve, stats);
+  walk.join_curve_ends();
+  merge_edge_crossings(walk.h, field.crossing_h, stats);
+  merge_edge_crossings(walk.v, field.crossing_v, stats);
+  for (size_t c = 0; c < walk.cells.size(); ++c) {
+    field.segments[c] = cell_signature(walk.cells[c], stats);
+    if (field.segments[c]) ++stats.cells_with_segments;
   }
   return stats;
 }

@@ -207,6 +207,153 @@ VmfComponent decode_lobe(const float* stored, double kappa_max) {
   return c;
 }
 
+namespace {
+
+// What every level's fit reads: the map, the optional per-texel features, the options.
+struct PyramidFit {
+  const NormalMap& map;
+  const Image* features;
+  const VmfBakeOptions& options;
+  int J, F;
+  double kappa_max;
+};
+
+// Level 0: one lobe per texel, alpha = 1, r = n.
+VmfLevel finest_vmf_level(const PyramidFit& p) {
+  const int J = p.J, F = p.F;
+  VmfLevel finest{p.map.width, p.map.height, std::vector<float>(p.map.texels.size() * J * 4, 0.0f), {}, {}};
+  if (F) finest.features.assign(p.map.texels.size() * J * F, 0.0f);
+  for (size_t t = 0; t < p.map.texels.size(); ++t) {
+    finest.lobes[t * J * 4] = 1.0f;
+    for (int a = 0; a < 3; ++a) finest.lobes[t * J * 4 + 1 + a] = p.map.texels[t][a];
+    for (int f = 0; f < F; ++f) finest.features[t * J * F + f] = p.features->pixels[t * F + f];
+  }
+  return finest;
+}
+
+// Texel (i, j) of `level`, fitted to the finest normals under it and stored there. Two starts from the child lobes
+// (the texels of `finer` under it, `cx`/`cy`), the paper's farthest-apart seeds and the mass-weighted ones, each run
+// by plain EM to a fixed point; the better (the paper's on a tie) then continues with the collapse guard. A texel of
+// more normals than max_chunks runs both on its chunks (vmf_normal_chunks.h), and the guarded fit then continues by
+// plain EM on the normals themselves.
+EmReport fit_texel(const PyramidFit& p, const VmfLevel& finer, const std::vector<std::vector<MipWeight>>& cx,
+                   const std::vector<std::vector<MipWeight>>& cy, const LevelGeometry& g, uint32_t i, uint32_t j,
+                   VmfLevel& level) {
+  const int J = p.J, F = p.F;
+  std::vector<uint32_t> xs, ys;
+  for (const MipWeight& x : cx[i]) xs.push_back(x.index);
+  for (const MipWeight& y : cy[j]) ys.push_back(y.index);
+  std::vector<WeightedNormal> normals;
+  std::vector<float> y;
+  gather(p.map, p.features, g, i, j, normals, y);
+  std::vector<WeightedNormal> chunks;
+  if (p.options.max_chunks > 0 && normals.size() > p.options.max_chunks)
+    chunks = vmf_normal_chunks(normals, p.options.max_chunks);
+  const std::span<const WeightedNormal> fitted = chunks.empty() ? std::span(normals) : std::span(chunks);
+  const std::vector<VmfComponent> candidates = child_lobes(finer, xs, ys, J, p.kappa_max);
+  std::vector<VmfComponent> mixture = farthest_apart_seeds(candidates, J, SeedRule::farthest);
+  std::vector<VmfComponent> weighted = farthest_apart_seeds(candidates, J, SeedRule::mass_weighted);
+  const std::vector<VmfComponent> mixture_before_fit = mixture;
+  // On chunks EM is cheap, and plain EM's path is kept (SQUAREM's jumps can pass an atom's basin by).
+  EmOptions plain = p.options.em, guarded = p.options.em;
+  plain.reseed = false;
+  if (!chunks.empty()) plain.accelerate = guarded.accelerate = false;
+  const EmReport first = fit_vmf_mixture(fitted, mixture, plain);
+  int start_iterations = first.iterations;
+  if (!same_lobes(mixture_before_fit, weighted)) {  // the same seeds (in another order) would give the same fit
+    const EmReport second = fit_vmf_mixture(fitted, weighted, plain);
+    if (second.log_likelihood > first.log_likelihood) mixture = std::move(weighted);
+    start_iterations += second.iterations;
+  }
+  EmReport report = fit_vmf_mixture(fitted, mixture, guarded);
+  report.iterations += start_iterations;
+  if (!chunks.empty()) {
+    const EmReport guarded_report = report;
+    EmOptions polish = plain;
+    polish.accelerate = p.options.em.accelerate;
+    report = fit_vmf_mixture(normals, mixture, polish);
+    report.iterations += guarded_report.iterations;
+    report.reseeds = guarded_report.reseeds;
+  }
+  const size_t t = size_t(j) * level.width + i;
+  store_mixture(mixture, &level.lobes[t * J * 4]);
+  if (F) store_features(mixture, lobe_features(normals, y, F, mixture), F, &level.features[t * J * F]);
+  return report;
+}
+
+// A w x h level fitted from the level below it (fit_texel per texel).
+VmfLevel fit_level(const PyramidFit& p, const VmfLevel& finer, uint32_t w, uint32_t h) {
+  const auto cx = mip_texel_weights(w, finer.width), cy = mip_texel_weights(h, finer.height);
+  const LevelGeometry g = geometry(p.map, w, h);
+  VmfLevel level{w, h, std::vector<float>(size_t(w) * h * p.J * 4), {}, {}};
+  if (p.F) level.features.assign(size_t(w) * h * p.J * p.F, 0.0f);
+  std::vector<EmReport> reports(size_t(w) * h);
+  for_each_texel(int64_t(w) * h, normals_per_texel(p.map, w, h), [&](int64_t t) {
+    reports[size_t(t)] = fit_texel(p, finer, cx, cy, g, uint32_t(t % w), uint32_t(t / w), level);
+  });
+  level.statistics = summarise(reports, level, p.J);
+  return level;
+}
+
+// Coherence of level k (its parent k + 1 already aligned): each texel's lobes move to the slots that best match its
+// parent's and its already-aligned neighbours' (assign_slots), the coarsest by amplitude; with options.em.align > 0
+// the levels between are refitted from the permuted lobes towards those targets. Texels go by anti-diagonals, so
+// the neighbours a texel reads are final.
+void align_level(const PyramidFit& p, VmfPyramid& pyramid, size_t k) {
+  const int J = p.J, F = p.F;
+  VmfLevel& level = pyramid.levels[k];
+  const uint32_t w = level.width, h = level.height;
+  const bool top = k + 1 == pyramid.levels.size();
+  const bool refit = p.options.em.align > 0.0 && k > 0 && !top;
+  const LevelGeometry g = geometry(p.map, w, h);
+  std::vector<EmReport> reports;
+  if (refit) reports.resize(size_t(w) * h);
+  for (uint32_t d = 0; d + 1 < w + h; ++d) {
+    const uint32_t first = d >= h ? d - h + 1 : 0, last = std::min(d, w - 1);
+    const auto texel_body = [&](int64_t offset) {
+      const uint32_t i = first + uint32_t(offset), j = d - i;
+      const std::vector<VmfComponent> mixture = decode_texel(level, i, j, J, p.kappa_max);
+      std::vector<Vec3> t(size_t(J), Vec3::Zero());
+      if (!top) {
+        const VmfLevel& parent = pyramid.levels[k + 1];
+        add_targets(parent, uint32_t((i + 0.5) * parent.width / w), uint32_t((j + 0.5) * parent.height / h), J, t,
+                    p.kappa_max);
+        if (i > 0) add_targets(level, i - 1, j, J, t, p.kappa_max);
+        if (j > 0) add_targets(level, i, j - 1, J, t, p.kappa_max);
+        if (i > 0 && j > 0) add_targets(level, i - 1, j - 1, J, t, p.kappa_max);
+      }
+      const std::vector<int> source = top ? by_amplitude(mixture) : assign_slots(mixture, t);
+      const size_t texel = size_t(j) * w + i;
+      if (!refit) {
+        move_slots(&level.lobes[texel * J * 4], source, 4);
+        if (F) move_slots(&level.features[texel * J * F], source, F);
+        return;
+      }
+      std::vector<VmfComponent> permuted(static_cast<size_t>(J));
+      for (int s = 0; s < J; ++s)
+        if (source[size_t(s)] >= 0) permuted[size_t(s)] = mixture[size_t(source[size_t(s)])];
+      std::vector<WeightedNormal> normals;
+      std::vector<float> y;
+      gather(p.map, p.features, g, i, j, normals, y);
+      reports[texel] = fit_vmf_mixture(normals, permuted, p.options.em, t);
+      store_mixture(permuted, &level.lobes[texel * J * 4]);
+      if (F) store_features(permuted, lobe_features(normals, y, F, permuted), F, &level.features[texel * J * F]);
+    };
+    // Ordering alone is a few hundred operations per texel: run it serially (one parallel region per
+    // diagonal would cost more in barriers than it saves); refits are EM runs and go in parallel.
+    const int64_t count = int64_t(last) + 1 - first;
+    if (refit) {
+      for_each_texel(count, normals_per_texel(p.map, w, h), texel_body);
+    } else {
+      for (int64_t offset = 0; offset < count; ++offset) texel_body(offset);
+    }
+  }
+  if (refit) level.statistics = summarise(reports, level, J);
+  level.statistics.mean_log_likelihood = stored_log_likelihood(p.map, level, J, p.kappa_max);
+}
+
+}  // namespace
+
 VmfPyramid build_vmf_pyramid(const NormalMap& map, const Image* features, const VmfBakeOptions& options,
                              Progress& progress) {
   const int J = options.lobes;
@@ -217,132 +364,21 @@ VmfPyramid build_vmf_pyramid(const NormalMap& map, const Image* features, const 
                 "material image is " + std::to_string(features->width) + "x" + std::to_string(features->height) +
                     ", the normal map " + std::to_string(map.width) + "x" + std::to_string(map.height),
                 "--material");
-  const int F = features ? int(features->channels) : 0;
-  const double kappa_max = options.em.kappa_max;
+  const PyramidFit p{map, features, options, J, features ? int(features->channels) : 0, options.em.kappa_max};
   const auto sizes = mip_level_sizes(map.width, map.height);
   VmfPyramid pyramid;
   pyramid.lobes = J;
-  pyramid.feature_count = F;
+  pyramid.feature_count = p.F;
   progress.start("vmf (fit levels, then align)", 2 * sizes.size());
-  // Level 0: one lobe per texel, alpha = 1, r = n.
-  VmfLevel finest{map.width, map.height, std::vector<float>(map.texels.size() * J * 4, 0.0f), {}, {}};
-  if (F) finest.features.assign(map.texels.size() * J * F, 0.0f);
-  for (size_t t = 0; t < map.texels.size(); ++t) {
-    finest.lobes[t * J * 4] = 1.0f;
-    for (int a = 0; a < 3; ++a) finest.lobes[t * J * 4 + 1 + a] = map.texels[t][a];
-    for (int f = 0; f < F; ++f) finest.features[t * J * F + f] = features->pixels[t * F + f];
-  }
-  pyramid.levels.push_back(std::move(finest));
+  pyramid.levels.push_back(finest_vmf_level(p));
   progress.advance();
-  // Fitting, finest to coarsest.
-  for (size_t k = 1; k < sizes.size(); ++k) {
-    const uint32_t w = sizes[k].width, h = sizes[k].height;
-    const VmfLevel& finer = pyramid.levels[k - 1];
-    const auto cx = mip_texel_weights(w, finer.width), cy = mip_texel_weights(h, finer.height);
-    const LevelGeometry g = geometry(map, w, h);
-    VmfLevel level{w, h, std::vector<float>(size_t(w) * h * J * 4), {}, {}};
-    if (F) level.features.assign(size_t(w) * h * J * F, 0.0f);
-    std::vector<EmReport> reports(size_t(w) * h);
-    for_each_texel(int64_t(w) * h, normals_per_texel(map, w, h), [&](int64_t t) {
-      const uint32_t i = uint32_t(t % w), j = uint32_t(t / w);
-      std::vector<uint32_t> xs, ys;
-      for (const MipWeight& x : cx[i]) xs.push_back(x.index);
-      for (const MipWeight& y : cy[j]) ys.push_back(y.index);
-      std::vector<WeightedNormal> normals;
-      std::vector<float> y;
-      gather(map, features, g, i, j, normals, y);
-      // Two starts from the child lobes, the paper's farthest-apart seeds and the mass-weighted ones, each run
-      // by plain EM to a fixed point; the better (the paper's on a tie) then continues with the collapse guard.
-      // A texel of more normals than max_chunks runs both on its chunks (vmf_normal_chunks.h), and the guarded fit
-      // then continues by plain EM on the normals themselves.
-      std::vector<WeightedNormal> chunks;
-      if (options.max_chunks > 0 && normals.size() > options.max_chunks)
-        chunks = vmf_normal_chunks(normals, options.max_chunks);
-      const std::span<const WeightedNormal> fitted = chunks.empty() ? std::span(normals) : std::span(chunks);
-      const std::vector<VmfComponent> candidates = child_lobes(finer, xs, ys, J, kappa_max);
-      std::vector<VmfComponent> mixture = farthest_apart_seeds(candidates, J, SeedRule::farthest);
-      std::vector<VmfComponent> weighted = farthest_apart_seeds(candidates, J, SeedRule::mass_weighted);
-      const std::vector<VmfComponent> mixture_before_fit = mixture;
-      // On chunks EM is cheap, and plain EM's path is kept (SQUAREM's jumps can pass an atom's basin by).
-      EmOptions plain = options.em, guarded = options.em;
-      plain.reseed = false;
-      if (!chunks.empty()) plain.accelerate = guarded.accelerate = false;
-      const EmReport first = fit_vmf_mixture(fitted, mixture, plain);
-      int start_iterations = first.iterations;
-      if (!same_lobes(mixture_before_fit, weighted)) {  // the same seeds (in another order) would give the same fit
-        const EmReport second = fit_vmf_mixture(fitted, weighted, plain);
-        if (second.log_likelihood > first.log_likelihood) mixture = std::move(weighted);
-        start_iterations += second.iterations;
-      }
-      EmReport& report = reports[size_t(t)];
-      report = fit_vmf_mixture(fitted, mixture, guarded);
-      report.iterations += start_iterations;
-      if (!chunks.empty()) {
-        const EmReport guarded = report;
-        EmOptions polish = plain;
-        polish.accelerate = options.em.accelerate;
-        report = fit_vmf_mixture(normals, mixture, polish);
-        report.iterations += guarded.iterations;
-        report.reseeds = guarded.reseeds;
-      }
-      store_mixture(mixture, &level.lobes[size_t(t) * J * 4]);
-      if (F) store_features(mixture, lobe_features(normals, y, F, mixture), F, &level.features[size_t(t) * J * F]);
-    });
-    level.statistics = summarise(reports, level, J);
+  for (size_t k = 1; k < sizes.size(); ++k) {  // fitting, finest to coarsest
+    VmfLevel level = fit_level(p, pyramid.levels[k - 1], sizes[k].width, sizes[k].height);
     pyramid.levels.push_back(std::move(level));
     progress.advance();
   }
-  // Coherence, coarsest to finest.
-  for (size_t k = sizes.size(); k-- > 0;) {
-    VmfLevel& level = pyramid.levels[k];
-    const uint32_t w = level.width, h = level.height;
-    const bool top = k + 1 == sizes.size();
-    const bool refit = options.em.align > 0.0 && k > 0 && !top;
-    const LevelGeometry g = geometry(map, w, h);
-    std::vector<EmReport> reports;
-    if (refit) reports.resize(size_t(w) * h);
-    for (uint32_t d = 0; d + 1 < w + h; ++d) {
-      const uint32_t first = d >= h ? d - h + 1 : 0, last = std::min(d, w - 1);
-      const auto texel_body = [&](int64_t offset) {
-        const uint32_t i = first + uint32_t(offset), j = d - i;
-        const std::vector<VmfComponent> mixture = decode_texel(level, i, j, J, kappa_max);
-        std::vector<Vec3> t(size_t(J), Vec3::Zero());
-        if (!top) {
-          const VmfLevel& parent = pyramid.levels[k + 1];
-          add_targets(parent, uint32_t((i + 0.5) * parent.width / w), uint32_t((j + 0.5) * parent.height / h), J, t,
-                      kappa_max);
-          if (i > 0) add_targets(level, i - 1, j, J, t, kappa_max);
-          if (j > 0) add_targets(level, i, j - 1, J, t, kappa_max);
-          if (i > 0 && j > 0) add_targets(level, i - 1, j - 1, J, t, kappa_max);
-        }
-        const std::vector<int> source = top ? by_amplitude(mixture) : assign_slots(mixture, t);
-        const size_t texel = size_t(j) * w + i;
-        if (!refit) {
-          move_slots(&level.lobes[texel * J * 4], source, 4);
-          if (F) move_slots(&level.features[texel * J * F], source, F);
-          return;
-        }
-        std::vector<VmfComponent> permuted(static_cast<size_t>(J));
-        for (int s = 0; s < J; ++s)
-          if (source[size_t(s)] >= 0) permuted[size_t(s)] = mixture[size_t(source[size_t(s)])];
-        std::vector<WeightedNormal> normals;
-        std::vector<float> y;
-        gather(map, features, g, i, j, normals, y);
-        reports[texel] = fit_vmf_mixture(normals, permuted, options.em, t);
-        store_mixture(permuted, &level.lobes[texel * J * 4]);
-        if (F) store_features(permuted, lobe_features(normals, y, F, permuted), F, &level.features[texel * J * F]);
-      };
-      // Ordering alone is a few hundred operations per texel: run it serially (one parallel region per
-      // diagonal would cost more in barriers than it saves); refits are EM runs and go in parallel.
-      const int64_t count = int64_t(last) + 1 - first;
-      if (refit) {
-        for_each_texel(count, normals_per_texel(map, w, h), texel_body);
-      } else {
-        for (int64_t offset = 0; offset < count; ++offset) texel_body(offset);
-      }
-    }
-    if (refit) level.statistics = summarise(reports, level, J);
-    level.statistics.mean_log_likelihood = stored_log_likelihood(map, level, J, kappa_max);
+  for (size_t k = sizes.size(); k-- > 0;) {  // coherence, coarsest to finest
+    align_level(p, pyramid, k);
     progress.advance();
   }
   progress.finish();
