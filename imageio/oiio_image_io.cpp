@@ -1,6 +1,6 @@
 // Image reading and writing through OpenImageIO (the contract is libbake/image/image_io.h): the only file that talks to
 // OIIO, built alone into the module libmicrobake_image_io.so that libbake/image/image_io.cpp loads on first use, so
-// that OpenImageIO's ~250 shared libraries are loaded only by commands that read or write images.
+// that OpenImageIO's ~260 shared libraries are loaded only by commands that read or write images.
 #include "libbake/image/image_io_module.h"
 
 #include <OpenImageIO/filesystem.h>

@@ -17,8 +17,8 @@ inline std::string file_text(const std::filesystem::path& p) {
 }
 
 inline std::vector<uint8_t> file_bytes(const std::filesystem::path& p) {
-  const std::string text = file_text(p);
-  return {text.begin(), text.end()};
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 }  // namespace mbk::test

@@ -1,4 +1,4 @@
-// The boundary between libbake and the image I/O module: OpenImageIO and the ~250 shared libraries it needs are
+// The boundary between libbake and the image I/O module: OpenImageIO and the ~260 shared libraries it needs are
 // not linked into microbake but into libmicrobake_image_io.so (imageio/oiio_image_io.cpp), which
 // libbake/image/image_io.cpp loads with dlopen the first time an image is read or written. Commands that read no
 // image (info, validate, plan) then start like a small program (docs/BENCHMARKS.md, "Start-up"). The module
