@@ -8,8 +8,6 @@
 #include <atomic>
 #include <cerrno>
 #include <cstring>
-#include <fstream>
-#include <vector>
 
 #include "formats/error.h"
 
@@ -78,27 +76,44 @@ AtomicFile::~AtomicFile() {
   }
 }
 
-void AtomicFile::write_all(std::span<const uint8_t> bytes) { write_all(std::vector{bytes}); }
+void AtomicFile::write_all(std::span<const uint8_t> bytes) {
+  write_file_bytes(temporary_, bytes, destination_.string());
+}
 
-void AtomicFile::write_all(const std::vector<std::span<const uint8_t>>& pieces) {
-  write_file_pieces(temporary_, pieces, destination_.string());
+void AtomicFile::check_stream(const char* what) {
+  if (!stream_) throw Error(ExitCode::io_failure, what, destination_.string());
+}
+
+void AtomicFile::append(std::span<const uint8_t> bytes) {
+  if (!stream_.is_open()) {
+    stream_.open(temporary_, std::ios::binary | std::ios::trunc);
+    check_stream("cannot create output file");
+  }
+  stream_.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  check_stream("cannot write output file (disk full?)");
+}
+
+void AtomicFile::overwrite(uint64_t offset, std::span<const uint8_t> bytes) {
+  if (!stream_.is_open()) throw Error(ExitCode::runtime_failure, "internal: overwrite before any append");
+  stream_.seekp(static_cast<std::streamoff>(offset));
+  stream_.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  stream_.seekp(0, std::ios::end);
+  check_stream("cannot write output file (disk full?)");
 }
 
 void write_file_bytes(const fs::path& path, std::span<const uint8_t> bytes, const std::string& where) {
-  write_file_pieces(path, {bytes}, where);
-}
-
-void write_file_pieces(const fs::path& path, const std::vector<std::span<const uint8_t>>& pieces,
-                       const std::string& where) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   if (!out) throw Error(ExitCode::io_failure, "cannot create output file", where);
-  for (std::span<const uint8_t> piece : pieces)
-    out.write(reinterpret_cast<const char*>(piece.data()), static_cast<std::streamsize>(piece.size()));
+  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
   out.close();
   if (!out) throw Error(ExitCode::io_failure, "cannot write output file (disk full?)", where);
 }
 
 void AtomicFile::commit() {
+  if (stream_.is_open()) {
+    stream_.close();
+    check_stream("cannot write output file (disk full?)");
+  }
   std::error_code ec;
   if (!fs::exists(temporary_, ec)) throw Error(ExitCode::io_failure, "output was not written", destination_.string());
   fsync_path(temporary_);

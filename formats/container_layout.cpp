@@ -74,17 +74,26 @@ std::string checksum_hex(uint64_t checksum) {
   return digits;
 }
 
+StreamedChecksum::StreamedChecksum() : state_(XXH3_createState()) {
+  if (!state_) throw std::bad_alloc();
+  XXH3_64bits_reset(static_cast<XXH3_state_t*>(state_));
+}
+
+StreamedChecksum::~StreamedChecksum() { XXH3_freeState(static_cast<XXH3_state_t*>(state_)); }
+
+void StreamedChecksum::update(const void* data, size_t size) {
+  XXH3_64bits_update(static_cast<XXH3_state_t*>(state_), data, size);
+}
+
+uint64_t StreamedChecksum::digest() const { return XXH3_64bits_digest(static_cast<const XXH3_state_t*>(state_)); }
+
 uint64_t header_checksum(const uint8_t* file, uint64_t metadata_offset, uint64_t metadata_size,
                          uint64_t section_table_offset, uint64_t section_table_size) {
-  XXH3_state_t* state = XXH3_createState();
-  if (!state) throw std::bad_alloc();
-  XXH3_64bits_reset(state);
-  XXH3_64bits_update(state, file, kChecksummedHeaderBytes);
-  XXH3_64bits_update(state, file + metadata_offset, metadata_size);
-  XXH3_64bits_update(state, file + section_table_offset, section_table_size);
-  const uint64_t digest = XXH3_64bits_digest(state);
-  XXH3_freeState(state);
-  return digest;
+  StreamedChecksum checksum;
+  checksum.update(file, kChecksummedHeaderBytes);
+  checksum.update(file + metadata_offset, metadata_size);
+  checksum.update(file + section_table_offset, section_table_size);
+  return checksum.digest();
 }
 
 }  // namespace mbk

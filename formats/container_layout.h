@@ -95,6 +95,21 @@ bool is_valid_section_name(const std::string& name);
 // 64-bit XXH3 (seed 0), the one checksum of the format.
 uint64_t checksum_of(const void* data, size_t size);
 
+// The same checksum over bytes given in consecutive pieces (a section written while it is produced): digest()
+// equals checksum_of() of the pieces joined.
+class StreamedChecksum {
+ public:
+  StreamedChecksum();
+  ~StreamedChecksum();
+  StreamedChecksum(const StreamedChecksum&) = delete;
+  StreamedChecksum& operator=(const StreamedChecksum&) = delete;
+  void update(const void* data, size_t size);
+  uint64_t digest() const;
+
+ private:
+  void* state_;  // XXH3_state_t (xxhash.h stays out of this header)
+};
+
 // A checksum as microbake prints it: 16 lowercase hex digits, most significant first (`info`, the "xxh3:..."
 // content hashes of metadata inputs, the names `bake` gives assets).
 std::string checksum_hex(uint64_t checksum);

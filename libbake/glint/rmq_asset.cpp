@@ -26,7 +26,7 @@ nlohmann::json rmq_conventions() {
   return c;
 }
 
-nlohmann::json rmq_statistics(const RmqTable& t) {
+nlohmann::json rmq_statistics(const RmqLeafLevel& t) {
   const RmqLayout& L = t.layout;
   nlohmann::json levels = nlohmann::json::array(), sides = nlohmann::json::array();
   for (uint32_t k = 0; k < L.levels; ++k) levels.push_back(k), sides.push_back(1u << k);
@@ -49,14 +49,18 @@ nlohmann::json rmq_statistics(const RmqTable& t) {
 }  // namespace
 
 AssetWriter bake_rmq_asset(const LoadedNormalMap& input, uint32_t patch, uint32_t bits, Progress& progress) {
-  RmqTable t = build_rmq_table(input.map, patch, bits, progress);
+  auto leaves = std::make_shared<const RmqLeafLevel>(build_rmq_leaf_level(input.map, patch, bits, progress));
+  const RmqLeafLevel& t = *leaves;
   nlohmann::json metadata;
   metadata["inputs"] = nlohmann::json::array({input.record.to_json()});
   metadata["parameters"] = t.layout.to_parameters();
   metadata["conventions"] = rmq_conventions();
   metadata["statistics"] = rmq_statistics(t);
   AssetWriter writer("rmq", std::move(metadata));
-  writer.add_bytes("table", t.layout.code_type(), t.layout.table_shape(), std::move(t.table));
+  // Levels 1..K are built from level 0 while the file is written, each handed to the file as it is built.
+  writer.add_produced("table", t.layout.code_type(), t.layout.table_shape(), [leaves](const auto& emit) {
+    for_each_rmq_level(*leaves, [&](uint32_t, std::span<const uint8_t> codes) { emit(codes); });
+  });
   const std::vector<double> range = {t.range[0].lo, t.range[0].hi, t.range[1].lo, t.range[1].hi};
   writer.add<double>("range", {2, 2}, range);
   return writer;

@@ -58,7 +58,7 @@ std::array<RmqRange, 2> leaf_range(const NormalMap& example, Progress& progress)
 
 // Level 0: the quantized leaf intervals, and the leaf statistics.
 template <typename Code>
-RmqLeafStatistics quantize_leaves(const NormalMap& example, RmqTable& t, Progress& progress) {
+RmqLeafStatistics quantize_leaves(const NormalMap& example, RmqLeafLevel& t, Progress& progress) {
   const RmqLayout& L = t.layout;
   const RmqQuantizer quantizer[2] = {RmqQuantizer(t.range[0], L.bits), RmqQuantizer(t.range[1], L.bits)};
   std::vector<RowLeafSums> rows(L.height);
@@ -66,7 +66,7 @@ RmqLeafStatistics quantize_leaves(const NormalMap& example, RmqTable& t, Progres
     thread_local LeafRow leaf;
     leaf.compute(example, uint32_t(row));
     const Vec3f* n = &example.texels[size_t(row) * L.width];
-    Code* out = reinterpret_cast<Code*>(t.table.data()) + 4 * L.entry_index(0, 0, uint32_t(row));
+    Code* out = reinterpret_cast<Code*>(t.codes.data()) + 4 * L.entry_index(0, 0, uint32_t(row));
     RowLeafSums s;  // a local, so that the sums stay in registers
     for (uint32_t x = 0; x < L.width; ++x) {
       const double ends[4] = {n[x].x() - leaf.reach_x[x], n[x].x() + leaf.reach_x[x], n[x].y() - leaf.reach_y[x],
@@ -106,16 +106,14 @@ RmqLeafStatistics quantize_leaves(const NormalMap& example, RmqTable& t, Progres
 // min_x, max_x, min_y, max_y: even codes take the smallest, odd the largest; loops over a row's codes, so that
 // the compiler vectorises them.
 template <typename Code>
-void build_level(RmqTable& t, uint32_t k, Progress& progress) {
-  const RmqLayout& L = t.layout;
+void build_level(const RmqLayout& L, uint32_t k, const Code* previous, Code* out_level) {
   const uint32_t half = 1u << (k - 1);
   const size_t row_codes = 4 * size_t(L.width), shift = 4 * size_t(std::min(half, L.width));
-  Code* codes = reinterpret_cast<Code*>(t.table.data());
   parallel_for(0, L.height, [&](int64_t row64) {
     const uint32_t row = uint32_t(row64);
-    const Code* top = codes + 4 * L.entry_index(k - 1, 0, row);
-    const Code* bottom = row + half < L.height ? codes + 4 * L.entry_index(k - 1, 0, row + half) : top;
-    Code* out = codes + 4 * L.entry_index(k, 0, row);
+    const Code* top = previous + row * row_codes;
+    const Code* bottom = row + half < L.height ? top + half * row_codes : top;
+    Code* out = out_level + row * row_codes;
     size_t i = 0;
     for (; i < row_codes - shift; i += 2) {  // the four children inside the example
       out[i] = std::min({top[i], bottom[i], top[i + shift], bottom[i + shift]});
@@ -125,14 +123,24 @@ void build_level(RmqTable& t, uint32_t k, Progress& progress) {
       out[i] = std::min(top[i], bottom[i]);
       out[i + 1] = std::max(top[i + 1], bottom[i + 1]);
     }
-    progress.advance();
   });
 }
 
 template <typename Code>
-void build_codes(const NormalMap& example, RmqTable& t, Progress& progress) {
-  t.leaf = quantize_leaves<Code>(example, t, progress);
-  for (uint32_t k = 1; k < t.layout.levels; ++k) build_level<Code>(t, k, progress);
+void for_each_level(const RmqLeafLevel& leaves,
+                    const std::function<void(uint32_t k, std::span<const uint8_t> codes)>& level) {
+  const RmqLayout& L = leaves.layout;
+  const size_t level_bytes = leaves.codes.size();
+  level(0, leaves.codes);
+  UninitializedVector<uint8_t> built[2];
+  const Code* previous = reinterpret_cast<const Code*>(leaves.codes.data());
+  for (uint32_t k = 1; k < L.levels; ++k) {
+    UninitializedVector<uint8_t>& out = built[k % 2];
+    out.resize(level_bytes);
+    build_level<Code>(L, k, previous, reinterpret_cast<Code*>(out.data()));
+    level(k, out);
+    previous = reinterpret_cast<const Code*>(out.data());
+  }
 }
 
 }  // namespace
@@ -142,23 +150,38 @@ uint32_t rmq_default_patch(uint32_t width, uint32_t height) {
   return side == 0 ? 1 : std::min(kRmqDefaultPatch, std::bit_floor(side));
 }
 
-RmqTable build_rmq_table(const NormalMap& example, uint32_t patch, uint32_t bits, Progress& progress) {
+RmqLeafLevel build_rmq_leaf_level(const NormalMap& example, uint32_t patch, uint32_t bits, Progress& progress) {
   if (example.width == 0 || example.height == 0 || example.texels.size() != size_t(example.width) * example.height)
     throw Error(ExitCode::runtime_failure, "internal: empty or inconsistent normal map");
-  RmqTable t;
+  RmqLeafLevel t;
   t.layout = {example.width, example.height, patch, std::has_single_bit(patch) ? rmq_levels_for_patch(patch) : 0, bits};
   if (std::string problem = parse_rmq_layout(t.layout.to_parameters(), t.layout); !problem.empty())
     throw Error(ExitCode::bad_command_line, "cannot build an rmq table: " + problem +
                                                 " (patch: a power of two in [1, 4096] not above the example's "
                                                 "smaller side; bits: 8 or 16)");
-  progress.start("rmq table", uint64_t(example.height) * (t.layout.levels + 1));
+  progress.start("rmq leaves", 2 * uint64_t(example.height));
   t.range = leaf_range(example, progress);
-  t.table.resize(t.layout.table_bytes());  // every entry of every level is written below
-  if (bits == 8)
-    build_codes<uint8_t>(example, t, progress);
-  else
-    build_codes<uint16_t>(example, t, progress);
+  t.codes.resize(t.layout.entries_per_level() * 4 * t.layout.code_bytes());  // every entry written below
+  t.leaf = bits == 8 ? quantize_leaves<uint8_t>(example, t, progress) : quantize_leaves<uint16_t>(example, t, progress);
   progress.finish();
+  return t;
+}
+
+void for_each_rmq_level(const RmqLeafLevel& leaves,
+                        const std::function<void(uint32_t k, std::span<const uint8_t> codes)>& level) {
+  if (leaves.layout.bits == 8)
+    for_each_level<uint8_t>(leaves, level);
+  else
+    for_each_level<uint16_t>(leaves, level);
+}
+
+RmqTable build_rmq_table(const NormalMap& example, uint32_t patch, uint32_t bits, Progress& progress) {
+  RmqLeafLevel leaves = build_rmq_leaf_level(example, patch, bits, progress);
+  RmqTable t{leaves.layout, leaves.range, {}, leaves.leaf};
+  t.table.resize(t.layout.table_bytes());  // every level is copied in below
+  for_each_rmq_level(leaves, [&](uint32_t k, std::span<const uint8_t> codes) {
+    std::memcpy(t.table.data() + k * codes.size(), codes.data(), codes.size());
+  });
   return t;
 }
 

@@ -9,7 +9,7 @@
 //    leaf interval is its element's reach (element_normal_bounds.h), in double, a row at a time
 //    (element_normal_reach_row: each texel difference once per row, nothing kept per texel).
 // 2. Level 0: each row's leaf intervals again, quantized, min down and max up (one quantum at most, in the safe
-//    direction), straight into the table (allocated, not zero-filled: every entry is written once).
+//    direction), straight into level 0 (allocated, not zero-filled: every entry is written once).
 // 3. Level k + 1 from level k (Algorithm 1's recursion, bottom-up): entry (k+1, x, row) is the min/max of the
 //    level-k entries at x or x + 2^k and row or row + 2^k, children outside the example skipped, so squares
 //    touching the border are the clipped squares.
@@ -18,14 +18,17 @@
 // Deviation [Wang20]: the recursion runs on the quantized codes, not on doubles quantized afterwards. Both
 // quantizers are monotone, so min/max commute with them and the codes are IDENTICAL to quantizing the exact
 // double min/max of every square (test: RmqTable.EveryStoredSquareIsTheQuantizedClippedBruteForce), while
-// the bake holds nothing but the output array and the leaf reaches (no double copy of 7 levels: 128 MiB per
-// level at 2048^2).
+// the bake holds nothing but the codes and the leaf reaches (no double copy of 7 levels: 128 MiB per level at
+// 2048^2). A bake hands each level to the file as it is built (for_each_rmq_level), so it holds level 0 and two
+// more levels, not the whole table (3/7 of it at the default patch).
 // Deviation [Wang20]: the paper stores levels 1..K and reads a texel's own normal at level 0; here level 0 is
 // stored because the leaf is the element's interval (Jacobian and cut-off), not the bare normal.
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <functional>
+#include <span>
 #include <vector>
 
 #include "formats/rmq_layout.h"
@@ -51,6 +54,26 @@ struct RmqLeafStatistics {
   double mean_slack_quanta = 0, max_slack_quanta = 0;  // |stored bound - exact bound| / quantum, over all bounds
 };
 
+// The first two passes: the quantization range, level 0 (the quantized leaf intervals) and their statistics. All a
+// bake needs before the file's layout is known (rmq_asset.h); levels 1..K follow from level 0 alone.
+struct RmqLeafLevel {
+  RmqLayout layout;
+  std::array<RmqRange, 2> range;       // n_x, n_y
+  UninitializedVector<uint8_t> codes;  // level 0 exactly as stored (u16 little-endian or u8)
+  RmqLeafStatistics leaf;
+};
+
+// patch: a power of two in [1, 4096], not above min(width, height); bits: 8 or 16. Error(bad_command_line)
+// otherwise, naming the rule.
+RmqLeafLevel build_rmq_leaf_level(const NormalMap& example, uint32_t patch, uint32_t bits, Progress& progress);
+
+// Levels 0..K in order, handed to `level(k, codes)` (the level's bytes exactly as stored): level k + 1 is built
+// from level k, so no more than two levels beyond level 0 are in memory at a time. Silent: each level is one
+// pass of min/max over the codes, a small part of the bake (the leaf reach dominates).
+void for_each_rmq_level(const RmqLeafLevel& leaves,
+                        const std::function<void(uint32_t k, std::span<const uint8_t> codes)>& level);
+
+// The whole table in memory, for queries (glint evaluation, tests).
 struct RmqTable {
   RmqLayout layout;
   std::array<RmqRange, 2> range;       // n_x, n_y
@@ -60,8 +83,7 @@ struct RmqTable {
   RmqTableView view() const { return RmqTableView(layout, range, table); }
 };
 
-// patch: a power of two in [1, 4096], not above min(width, height); bits: 8 or 16. Error(bad_command_line)
-// otherwise, naming the rule.
+// build_rmq_leaf_level, then every level into one array.
 RmqTable build_rmq_table(const NormalMap& example, uint32_t patch, uint32_t bits, Progress& progress);
 
 }  // namespace mbk

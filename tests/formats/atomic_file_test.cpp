@@ -49,6 +49,28 @@ TEST_F(AtomicFileTest, AbandonedWriteLeavesNothingAndKeepsOldFile) {
   EXPECT_EQ(std::string(old.begin(), old.end()), "old");
 }
 
+// Streamed writing: appended pieces in order, a header overwritten at the start after them; nothing at the
+// destination before commit(), nothing at all when abandoned.
+TEST_F(AtomicFileTest, AppendedPiecesAndAnOverwrittenHeadCommitAsOneFile) {
+  {
+    AtomicFile f(dir_ / "out.mbk");
+    f.append(std::vector<uint8_t>{0, 0, 0});
+    f.append(std::vector<uint8_t>{4, 5});
+    f.append(std::vector<uint8_t>{});
+    f.overwrite(0, std::vector<uint8_t>{1, 2});
+    f.append(std::vector<uint8_t>{6});  // after an overwrite, appending continues at the end
+    EXPECT_FALSE(fs::exists(dir_ / "out.mbk"));
+    f.commit();
+  }
+  EXPECT_EQ(read_file_bytes(dir_ / "out.mbk"), (std::vector<uint8_t>{1, 2, 0, 4, 5, 6}));
+  EXPECT_EQ(entries(), 1u);
+  {
+    AtomicFile f(dir_ / "other.mbk");
+    f.append(std::vector<uint8_t>{1});
+  }
+  EXPECT_EQ(entries(), 1u);
+}
+
 TEST_F(AtomicFileTest, MissingFolderIsAnIoFailure) {
   try {
     AtomicFile f(dir_ / "no" / "such" / "out.mbk");

@@ -124,6 +124,63 @@ TEST(ContainerRoundTrip, TakenOverSectionsAndStreamedWriteGiveTheSerializedBytes
   EXPECT_EQ(a.read<uint8_t>("raw"), (std::vector<uint8_t>{200, 201, 202, 203, 204}));
 }
 
+// A produced section (AssetWriter::add_produced) gives the file a held section gives, whatever the pieces it is
+// emitted in (empty, odd, one byte), before and after held sections, and on every call (serialize, then write).
+TEST(ContainerRoundTrip, ProducedSectionsGiveTheBytesOfHeldOnes) {
+  const std::vector<uint16_t> codes = pattern<uint16_t>(1001);
+  const std::vector<uint8_t> tail = pattern<uint8_t>(13);
+  const std::span<const uint8_t> code_bytes(reinterpret_cast<const uint8_t*>(codes.data()), codes.size() * 2);
+  AssetWriter held = test::mip_writer(3, 2), produced = test::mip_writer(3, 2);
+  held.add("codes", {7, 11, 13}, codes);
+  held.add("tail", {13}, tail);
+  int calls = 0;
+  produced.add_produced("codes", ElementType::u16, {7, 11, 13}, [&](const AssetWriter::SectionSink& emit) {
+    ++calls;
+    const size_t sizes[] = {0, 1, 777, 3};
+    for (size_t at = 0, i = 0; at < code_bytes.size(); ++i) {
+      const size_t piece = std::min(code_bytes.size() - at, sizes[i % 4]);
+      emit(code_bytes.subspan(at, piece));
+      at += piece;
+    }
+  });
+  produced.add_produced("tail", ElementType::u8, {13}, [&](const AssetWriter::SectionSink& emit) { emit(tail); });
+  const std::vector<uint8_t> bytes = held.serialize();
+  EXPECT_EQ(produced.file_size(), bytes.size());
+  EXPECT_EQ(produced.serialize(), bytes);
+  test::ScratchDir dir("produced_write");
+  produced.write(dir.path() / "produced.mbk");
+  EXPECT_EQ(read_file_bytes(dir.path() / "produced.mbk"), bytes);
+  EXPECT_EQ(calls, 2);
+  EXPECT_EQ(Asset::parse(bytes, "memory").read<uint16_t>("codes"), codes);
+}
+
+// A producer that emits too few or too many bytes, or throws, is an internal error, and write() leaves no file
+// (nor its temporary) behind.
+TEST(ContainerRoundTrip, ProducerOfTheWrongLengthOrThatThrowsLeavesNoFile) {
+  const std::vector<uint8_t> ten(10, 7);
+  const std::vector<AssetWriter::SectionProducer> producers = {
+      [&](const AssetWriter::SectionSink& emit) { emit(std::span(ten).first(9)); },
+      [&](const AssetWriter::SectionSink& emit) { emit(ten), emit(std::span(ten).first(1)); },
+      [&](const AssetWriter::SectionSink& emit) {
+        emit(std::span(ten).first(5));
+        throw Error(ExitCode::io_failure, "input vanished", "x.png");
+      }};
+  for (size_t i = 0; i < producers.size(); ++i) {
+    SCOPED_TRACE(i);
+    AssetWriter w = test::mip_writer(2, 2);
+    w.add_produced("ten", ElementType::u8, {10}, producers[i]);
+    EXPECT_THROW(w.serialize(), Error);
+    test::ScratchDir dir("produced_failure");
+    try {
+      w.write(dir.path() / "out.mbk");
+      ADD_FAILURE() << "write() succeeded";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), i < 2 ? ExitCode::runtime_failure : ExitCode::io_failure);
+    }
+    EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+  }
+}
+
 TEST(ContainerRoundTrip, WriterRejectsMalformedSections) {
   AssetWriter w = test::mip_writer(1, 1);
   std::vector<float> three(3);
