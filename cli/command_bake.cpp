@@ -103,10 +103,9 @@ class BakeCommand : public Command {
  private:
   bool text() const { return options_.format == OutputFormat::text && !options_.run.quiet; }
 
-  int bake_all(nlohmann::json& report) {
-    const std::vector<BatchScene> scenes = load_batch_scenes(options_.scenes, options_.out_dir);
-    const std::vector<BatchAsset> batch = plan_batch(scenes);
-    std::vector<AssetOutcome> outcomes(batch.size());
+  // Each asset's outcome before baking: failed (an input is missing), skipped (up to date), or queued (pending with
+  // --dry-run) with the reason; returns the indices of those to bake.
+  std::vector<size_t> check_freshness(const std::vector<BatchAsset>& batch, std::vector<AssetOutcome>& outcomes) const {
     std::vector<size_t> to_bake;
     for (size_t i = 0; i < batch.size(); ++i) {
       const BatchAsset& a = batch[i];
@@ -124,6 +123,41 @@ class BakeCommand : public Command {
         to_bake.push_back(i);
       }
     }
+    return to_bake;
+  }
+
+  // One report entry per asset (and, as text, one line): path, kind, status, reason, time, size, inputs, uses.
+  void report_assets(const std::vector<BatchAsset>& batch, const std::vector<AssetOutcome>& outcomes, bool several,
+                     nlohmann::json& report) const {
+    for (size_t i = 0; i < batch.size(); ++i) {
+      const BatchAsset& a = batch[i];
+      const AssetOutcome& o = outcomes[i];
+      nlohmann::json uses = nlohmann::json::array(), inputs = nlohmann::json::array();
+      for (const BatchUse& u : a.uses)
+        uses.push_back({{"scene", u.scene}, {"material", u.material}, {"effect", u.effect}});
+      for (const BakeInput& in : a.planned.recipe.inputs) inputs.push_back(in.path.string());
+      report["assets"].push_back({{"path", a.file.string()},
+                                  {"kind", a.planned.recipe.kind},
+                                  {"status", o.status},
+                                  {"reason", o.reason},
+                                  {"seconds", o.seconds},
+                                  {"bytes", o.status == "baked" || o.status == "skipped" ? size_or_zero(a.file) : 0},
+                                  {"inputs", inputs},
+                                  {"uses", uses}});
+      if (text())
+        std::cout << (o.status == "pending"                      ? "would bake"
+                      : o.status == "baked" && o.replaces_a_file ? "rebuilt"
+                                                                 : o.status)
+                  << " " << (a.file.empty() ? a.planned.recipe.kind + " asset" : a.file.filename().string()) << " ("
+                  << a.planned.recipe.kind << ", used by " << uses_text(a, several) << "): " << o.reason << "\n";
+    }
+  }
+
+  int bake_all(nlohmann::json& report) {
+    const std::vector<BatchScene> scenes = load_batch_scenes(options_.scenes, options_.out_dir);
+    const std::vector<BatchAsset> batch = plan_batch(scenes);
+    std::vector<AssetOutcome> outcomes(batch.size());
+    std::vector<size_t> to_bake = check_freshness(batch, outcomes);
     std::set<fs::path> folders;
     for (const BatchScene& s : scenes) folders.insert(s.asset_folder);
     const bool planned_everything = std::none_of(batch.begin(), batch.end(), [](auto& a) { return a.file.empty(); });
@@ -149,28 +183,7 @@ class BakeCommand : public Command {
     if (text() && batch.empty()) std::cout << "nothing to bake: no material names an effect that needs an asset\n";
     if (text() && !batch.empty())
       for (const fs::path& folder : folders) std::cout << "asset folder: " << folder.string() << "\n";
-    for (size_t i = 0; i < batch.size(); ++i) {
-      const BatchAsset& a = batch[i];
-      const AssetOutcome& o = outcomes[i];
-      nlohmann::json uses = nlohmann::json::array(), inputs = nlohmann::json::array();
-      for (const BatchUse& u : a.uses)
-        uses.push_back({{"scene", u.scene}, {"material", u.material}, {"effect", u.effect}});
-      for (const BakeInput& in : a.planned.recipe.inputs) inputs.push_back(in.path.string());
-      report["assets"].push_back({{"path", a.file.string()},
-                                  {"kind", a.planned.recipe.kind},
-                                  {"status", o.status},
-                                  {"reason", o.reason},
-                                  {"seconds", o.seconds},
-                                  {"bytes", o.status == "baked" || o.status == "skipped" ? size_or_zero(a.file) : 0},
-                                  {"inputs", inputs},
-                                  {"uses", uses}});
-      if (text())
-        std::cout << (o.status == "pending"                      ? "would bake"
-                      : o.status == "baked" && o.replaces_a_file ? "rebuilt"
-                                                                 : o.status)
-                  << " " << (a.file.empty() ? a.planned.recipe.kind + " asset" : a.file.filename().string()) << " ("
-                  << a.planned.recipe.kind << ", used by " << uses_text(a, several) << "): " << o.reason << "\n";
-    }
+    report_assets(batch, outcomes, several, report);
     for (const fs::path& p : pruned) {
       report["pruned"].push_back(p.string());
       if (text()) std::cout << (options_.dry_run ? "would prune " : "pruned ") << p.string() << "\n";

@@ -3,6 +3,8 @@
 #include <cctype>
 #include <cstdio>
 #include <iostream>
+#include <memory>
+#include <optional>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -150,37 +152,18 @@ std::string unknown_option(const CLI::App& sub, const std::vector<std::string>& 
   return "";
 }
 
-}  // namespace
+CLI::App* find_command(const std::vector<CLI::App*>& subcommands, const std::string& name) {
+  for (auto* sub : subcommands)
+    if (sub->get_name() == name) return sub;
+  return nullptr;
+}
 
-int main_impl(int argc, char** argv) {
-  CLI::App app{
-      "microbake: bakes example normal maps into versioned .mbk assets and renders what they mean.\n"
-      "Exit codes: 0 success, 1 bad command line, 2 I/O failure, 3 invalid input, 4 runtime failure,\n"
-      "5 unsupported, 6 difference above threshold (compare).",
-      "microbake"};
-  app.formatter(std::make_shared<HelpFormatter>());
-  app.set_version_flag("--version", "microbake " + microbake_version());
-  app.require_subcommand(1);
-  app.footer("Run 'microbake help COMMAND' or 'microbake COMMAND --help' for a command's options and examples.");
-  const auto table = command_table();
-  std::vector<std::unique_ptr<Command>> commands;
-  std::vector<CLI::App*> subcommands;
-  for (const auto& entry : table) {
-    commands.push_back(entry.make());
-    CLI::App* sub = app.add_subcommand(entry.name, entry.summary)->group("Commands");
-    commands.back()->add_options(*sub);
-    refuse_empty_values(*sub);
-    sub->footer(help_footer(entry.examples));
-    subcommands.push_back(sub);
-  }
-  std::vector<std::string> arguments(argv + 1, argv + argc);
-  auto find_command = [&](const std::string& name) -> CLI::App* {
-    for (auto* sub : subcommands)
-      if (sub->get_name() == name) return sub;
-    return nullptr;
-  };
-  // `microbake help [COMMAND]`, and a first argument that is no command nor option: before CLI11, which would
-  // print the main help for `nosuchcommand --help` and only "A subcommand is required" for `mipp x`.
+// What is answered before CLI11 parses: `microbake help [COMMAND]`, no arguments, and a first argument that is no
+// command nor option (CLI11 would print the main help for `nosuchcommand --help` and only "A subcommand is
+// required" for `mipp x`). The exit code, or nothing when CLI11 should parse.
+std::optional<int> answer_before_parsing(const CLI::App& app, const std::vector<CLI::App*>& subcommands,
+                                         const std::vector<std::string>& arguments,
+                                         const std::vector<CommandEntry>& table) {
   if (!arguments.empty() && arguments[0] == "help") {
     if (arguments.size() > 2)
       return report("help takes one command (see 'microbake help')", ExitCode::bad_command_line);
@@ -188,34 +171,21 @@ int main_impl(int argc, char** argv) {
       std::cout << app.help();
       return 0;
     }
-    if (const CLI::App* sub = find_command(arguments[1])) {
+    if (const CLI::App* sub = find_command(subcommands, arguments[1])) {
       std::cout << sub->help("microbake");
       return 0;
     }
     return report(unknown_command(arguments[1], table) + " (see 'microbake help')", ExitCode::bad_command_line);
   }
-  if (!arguments.empty() && arguments[0].compare(0, 1, "-") != 0 && !find_command(arguments[0]))
+  if (!arguments.empty() && arguments[0].compare(0, 1, "-") != 0 && !find_command(subcommands, arguments[0]))
     return report(unknown_command(arguments[0], table) + " (see 'microbake help')", ExitCode::bad_command_line);
   if (arguments.empty()) return report("no command given (see 'microbake help')", ExitCode::bad_command_line);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::string what = e.what();
-    std::string where = "see 'microbake help'";
-    if (CLI::App* sub = find_command(arguments[0])) {
-      where = "see 'microbake " + sub->get_name() + " --help'";
-      // An unknown option is the likeliest cause, whatever CLI11 noticed first (e.g. a required option it hid).
-      if (const std::string unknown = unknown_option(*sub, {arguments.begin() + 1, arguments.end()}); !unknown.empty())
-        what = unknown;
-    }
-    return report(what + " (" + where + ")", ExitCode::bad_command_line);
-  }
+  return std::nullopt;
+}
+
+// Runs the parsed command, turning every failure into its one-line message and exit code.
+int run_parsed_command(const std::vector<CLI::App*>& subcommands,
+                       const std::vector<std::unique_ptr<Command>>& commands) {
   // Every error names where it happened; one that no helper located is placed in the command (a command-line
   // mistake: in its options, pointing at its help).
   std::string command = "microbake";
@@ -240,6 +210,52 @@ int main_impl(int argc, char** argv) {
   } catch (const std::exception& e) {
     return report(std::string("internal error: ") + e.what() + " (" + command + ")", ExitCode::runtime_failure);
   }
+}
+}  // namespace
+
+int main_impl(int argc, char** argv) {
+  CLI::App app{
+      "microbake: bakes example normal maps into versioned .mbk assets and renders what they mean.\n"
+      "Exit codes: 0 success, 1 bad command line, 2 I/O failure, 3 invalid input, 4 runtime failure,\n"
+      "5 unsupported, 6 difference above threshold (compare).",
+      "microbake"};
+  app.formatter(std::make_shared<HelpFormatter>());
+  app.set_version_flag("--version", "microbake " + microbake_version());
+  app.require_subcommand(1);
+  app.footer("Run 'microbake help COMMAND' or 'microbake COMMAND --help' for a command's options and examples.");
+  const auto table = command_table();
+  std::vector<std::unique_ptr<Command>> commands;
+  std::vector<CLI::App*> subcommands;
+  for (const auto& entry : table) {
+    commands.push_back(entry.make());
+    CLI::App* sub = app.add_subcommand(entry.name, entry.summary)->group("Commands");
+    commands.back()->add_options(*sub);
+    refuse_empty_values(*sub);
+    sub->footer(help_footer(entry.examples));
+    subcommands.push_back(sub);
+  }
+  const std::vector<std::string> arguments(argv + 1, argv + argc);
+  if (const std::optional<int> answered = answer_before_parsing(app, subcommands, arguments, table)) return *answered;
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::string what = e.what();
+    std::string where = "see 'microbake help'";
+    if (CLI::App* sub = find_command(subcommands, arguments[0])) {
+      where = "see 'microbake " + sub->get_name() + " --help'";
+      // An unknown option is the likeliest cause, whatever CLI11 noticed first (e.g. a required option it hid).
+      if (const std::string unknown = unknown_option(*sub, {arguments.begin() + 1, arguments.end()}); !unknown.empty())
+        what = unknown;
+    }
+    return report(what + " (" + where + ")", ExitCode::bad_command_line);
+  }
+  return run_parsed_command(subcommands, commands);
 }
 
 }  // namespace mbk::cli

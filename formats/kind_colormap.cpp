@@ -9,6 +9,7 @@
 // convolution recomputed in double from the stored knots and colours (17007).
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "formats/number_text.h"
@@ -29,15 +30,10 @@ bool good_side(const nlohmann::json& v) {
 
 bool finite_number(const nlohmann::json& v) { return v.is_number() && std::isfinite(v.get<double>()); }
 
-void check_colormap(const Asset& a, std::vector<Finding>& out) {
-  const auto& p = a.metadata()["parameters"];
-  if (!p.is_object() || !p.contains("width") || !p.contains("height") || !good_side(p["width"]) ||
-      !good_side(p["height"]) || !p.contains("mean_min") || !p.contains("mean_max") || !p.contains("sigma_max") ||
-      !finite_number(p["mean_min"]) || !finite_number(p["mean_max"]) || !finite_number(p["sigma_max"]) ||
-      !(p["mean_min"].get<double>() < p["mean_max"].get<double>()) || !(p["sigma_max"].get<double>() > 0.0)) {
-    out.push_back(make_finding(msg::colormap_bad_parameters, "see parameters", {{"key", "parameters"}}));
-    return;
-  }
+// The three sections' shapes (from K knots and the parameters' W x H) and finiteness: their data (knots, colours,
+// table), or nothing after a finding.
+std::optional<std::vector<std::vector<float>>> read_colormap_sections(const Asset& a, const nlohmann::json& p,
+                                                                      std::vector<Finding>& out) {
   const SectionInfo& knots_info = a.section(std::string(kColormapKnotsSection));
   const uint64_t K = knots_info.shape.empty() ? 0 : knots_info.shape[0];
   const uint64_t W = p["width"].get<uint64_t>(), H = p["height"].get<uint64_t>();
@@ -46,7 +42,7 @@ void check_colormap(const Asset& a, std::vector<Finding>& out) {
   if (K == 0 || K > kColormapMaxKnots) {
     out.push_back(make_finding(msg::colormap_section_shape, "'knots' should be f32 [K] with 1 <= K <= 2^20",
                                {{"section", kColormapKnotsSection}}));
-    return;
+    return std::nullopt;
   }
   for (const auto& [name, shape] : shapes)
     if (a.section(std::string(name)).shape != shape) {
@@ -54,7 +50,7 @@ void check_colormap(const Asset& a, std::vector<Finding>& out) {
       for (uint64_t d : shape) dims += (dims.empty() ? "" : ", ") + number_text(d);
       out.push_back(make_finding(msg::colormap_section_shape,
                                  "'" + std::string(name) + "' should be f32 [" + dims + "]", {{"section", name}}));
-      return;
+      return std::nullopt;
     }
   std::vector<std::vector<float>> data;
   for (const auto& [name, shape] : shapes) {
@@ -63,24 +59,17 @@ void check_colormap(const Asset& a, std::vector<Finding>& out) {
       if (!std::isfinite(data.back()[i])) {
         out.push_back(make_finding(msg::colormap_non_finite, "'" + std::string(name) + "' element " + number_text(i),
                                    {{"section", name}, {"index", i}}));
-        return;
+        return std::nullopt;
       }
   }
-  ColormapCurve curve;
-  for (uint64_t k = 0; k < K; ++k) {
-    curve.knots.push_back(data[0][k]);
-    curve.colors.push_back({data[1][3 * k], data[1][3 * k + 1], data[1][3 * k + 2]});
-  }
-  if (const std::string problem = colormap_curve_problem(curve); !problem.empty()) {
-    out.push_back(make_finding(msg::colormap_bad_knots, problem, {{"section", kColormapKnotsSection}}));
-    return;
-  }
-  ColormapTable table;
-  table.width = uint32_t(W);
-  table.height = uint32_t(H);
-  table.mean_min = p["mean_min"].get<double>();
-  table.mean_max = p["mean_max"].get<double>();
-  table.sigma_max = p["sigma_max"].get<double>();
+  return data;
+}
+
+// Every table entry against the curve it was baked from: row 0 is the curve, every entry lies inside the colours'
+// range, and rows above 0 are the curve's convolutions.
+void check_colormap_table(const ColormapCurve& curve, const ColormapTable& table, const std::vector<float>& T,
+                          std::vector<Finding>& out) {
+  const uint32_t W = table.width, H = table.height;
   std::array<double, 3> lo, hi;
   double magnitude = 0.0;
   for (int c = 0; c < 3; ++c) {
@@ -92,7 +81,6 @@ void check_colormap(const Asset& a, std::vector<Finding>& out) {
     magnitude = std::max({magnitude, std::abs(lo[c]), std::abs(hi[c])});
   }
   const double tolerance = kRelativeTolerance * magnitude;
-  const std::vector<float>& T = data[2];
   auto entry = [&](uint32_t j, uint32_t i, int c) { return double(T[(size_t(j) * W + i) * 3 + c]); };
   auto where = [&](uint32_t j, uint32_t i) {
     return nlohmann::json{{"section", kColormapTableSection}, {"row", j}, {"column", i}};
@@ -130,6 +118,36 @@ void check_colormap(const Asset& a, std::vector<Finding>& out) {
           return;
         }
     }
+}
+
+void check_colormap(const Asset& a, std::vector<Finding>& out) {
+  const auto& p = a.metadata()["parameters"];
+  if (!p.is_object() || !p.contains("width") || !p.contains("height") || !good_side(p["width"]) ||
+      !good_side(p["height"]) || !p.contains("mean_min") || !p.contains("mean_max") || !p.contains("sigma_max") ||
+      !finite_number(p["mean_min"]) || !finite_number(p["mean_max"]) || !finite_number(p["sigma_max"]) ||
+      !(p["mean_min"].get<double>() < p["mean_max"].get<double>()) || !(p["sigma_max"].get<double>() > 0.0)) {
+    out.push_back(make_finding(msg::colormap_bad_parameters, "see parameters", {{"key", "parameters"}}));
+    return;
+  }
+  const std::optional<std::vector<std::vector<float>>> data = read_colormap_sections(a, p, out);
+  if (!data) return;
+  const uint64_t K = (*data)[0].size();
+  ColormapCurve curve;
+  for (uint64_t k = 0; k < K; ++k) {
+    curve.knots.push_back((*data)[0][k]);
+    curve.colors.push_back({(*data)[1][3 * k], (*data)[1][3 * k + 1], (*data)[1][3 * k + 2]});
+  }
+  if (const std::string problem = colormap_curve_problem(curve); !problem.empty()) {
+    out.push_back(make_finding(msg::colormap_bad_knots, problem, {{"section", kColormapKnotsSection}}));
+    return;
+  }
+  ColormapTable table;
+  table.width = p["width"].get<uint32_t>();
+  table.height = p["height"].get<uint32_t>();
+  table.mean_min = p["mean_min"].get<double>();
+  table.mean_max = p["mean_max"].get<double>();
+  table.sigma_max = p["sigma_max"].get<double>();
+  check_colormap_table(curve, table, (*data)[2], out);
 }
 
 }  // namespace

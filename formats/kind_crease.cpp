@@ -21,17 +21,8 @@ namespace {
 
 constexpr double kUnitTolerance = 1e-5;
 
-void check_crease(const Asset& a, std::vector<Finding>& out) {
-  uint32_t w = 0, h = 0;
-  if (std::string problem = parse_crease_size(a, w, h); !problem.empty()) {
-    out.push_back(make_finding(msg::crease_bad_parameters, problem, {{"key", "parameters"}}));
-    return;
-  }
-  if (std::string problem = check_crease_section_shapes(a, w, h); !problem.empty()) {
-    out.push_back(make_finding(msg::crease_section_shape, problem));
-    return;
-  }
-  const CreaseField f = read_crease_field(a);
+// Every float finite, and every edge crossing either none or strictly inside its edge.
+bool check_crease_values(const CreaseField& f, std::vector<Finding>& out) {
   const std::pair<const char*, const std::vector<float>*> floats[] = {{kCreaseNormalsSection, &f.normals},
                                                                       {kCreaseDistanceSection, &f.distance},
                                                                       {kCreaseGradientSection, &f.gradient},
@@ -42,7 +33,7 @@ void check_crease(const Asset& a, std::vector<Finding>& out) {
       if (!std::isfinite((*values)[i])) {
         out.push_back(make_finding(msg::crease_non_finite, "'" + std::string(name) + "' element " + number_text(i),
                                    {{"section", name}, {"index", i}}));
-        return;
+        return false;
       }
   for (const auto& [name, values] :
        {std::pair{kCreaseCrossingHSection, &f.crossing_h}, std::pair{kCreaseCrossingVSection, &f.crossing_v}})
@@ -52,9 +43,15 @@ void check_crease(const Asset& a, std::vector<Finding>& out) {
         out.push_back(make_finding(msg::crease_bad_crossing,
                                    "'" + std::string(name) + "' edge " + number_text(i) + " is " + number_text(t),
                                    {{"section", name}, {"index", i}}));
-        return;
+        return false;
       }
     }
+  return true;
+}
+
+// Every cell's segment bits: known bits, at most kCreaseMaxSegmentsPerCell segments, direction bits only on
+// segments, and each segment's two edges crossed.
+bool check_crease_cells(const CreaseField& f, std::vector<Finding>& out) {
   for (uint32_t j = 0; j < f.cells_y(); ++j)
     for (uint32_t i = 0; i < f.cells_x(); ++i) {
       const CreaseCellEdges c = crease_cell_edges(f, i, j);
@@ -76,27 +73,47 @@ void check_crease(const Asset& a, std::vector<Finding>& out) {
         out.push_back(make_finding(msg::crease_bad_segments,
                                    "cell (" + number_text(i) + ", " + number_text(j) + "): " + problem,
                                    {{"section", kCreaseSegmentsSection}, {"cell", {i, j}}}));
-        return;
+        return false;
       }
     }
+  return true;
+}
+
+// Every sample's distance non-negative, gradient of unit length and side +1 or -1.
+bool check_crease_samples(const CreaseField& f, std::vector<Finding>& out) {
   for (size_t k = 0; k < f.distance.size(); ++k) {
     const uint32_t i = uint32_t(k % f.samples_x()), j = uint32_t(k / f.samples_x());
     const nlohmann::json at = {{"sample", {i, j}}};
     const std::string where = "sample (" + number_text(i) + ", " + number_text(j) + ")";
     if (f.distance[k] < 0.0f) {
       out.push_back(make_finding(msg::crease_negative_distance, where + ": " + number_text(f.distance[k]), at));
-      return;
+      return false;
     }
     const double len = std::hypot(double(f.gradient[2 * k]), double(f.gradient[2 * k + 1]));
     if (std::abs(len - 1.0) > kUnitTolerance) {
       out.push_back(make_finding(msg::crease_gradient_not_unit, where + ": length " + number_text(len), at));
-      return;
+      return false;
     }
     if (f.side[k] != 1 && f.side[k] != -1) {
       out.push_back(make_finding(msg::crease_bad_side, where + ": " + number_text(int(f.side[k])), at));
-      return;
+      return false;
     }
   }
+  return true;
+}
+
+void check_crease(const Asset& a, std::vector<Finding>& out) {
+  uint32_t w = 0, h = 0;
+  if (std::string problem = parse_crease_size(a, w, h); !problem.empty()) {
+    out.push_back(make_finding(msg::crease_bad_parameters, problem, {{"key", "parameters"}}));
+    return;
+  }
+  if (std::string problem = check_crease_section_shapes(a, w, h); !problem.empty()) {
+    out.push_back(make_finding(msg::crease_section_shape, problem));
+    return;
+  }
+  const CreaseField f = read_crease_field(a);
+  if (!check_crease_values(f, out) || !check_crease_cells(f, out) || !check_crease_samples(f, out)) return;
   for (size_t k = 0; k < f.normals.size() / 3; ++k) {
     const double x = f.normals[3 * k], y = f.normals[3 * k + 1], z = f.normals[3 * k + 2];
     const double len = std::sqrt(x * x + y * y + z * z);

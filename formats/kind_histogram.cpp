@@ -30,33 +30,9 @@ std::string shape_text(const std::vector<uint64_t>& shape) {
   return "[" + s + "]";
 }
 
-void check_histogram(const Asset& a, std::vector<Finding>& out) {
-  const auto& p = a.metadata()["parameters"];
-  if (!p.is_object() || !unsigned_in(p, "width", 1, kHistogramMaxSide) ||
-      !unsigned_in(p, "height", 1, kHistogramMaxSide) || !unsigned_in(p, "theta_bins", 1, kHistogramMaxThetaBins) ||
-      !unsigned_in(p, "theta_bins_requested", 1, kHistogramMaxThetaBins) ||
-      !unsigned_in(p, "phi_bins", 1, kHistogramMaxPhiBins) || !p.contains("method") || p["method"] != "exact" ||
-      p["theta_bins"].get<uint64_t>() > p["theta_bins_requested"].get<uint64_t>()) {
-    out.push_back(make_finding(msg::histogram_bad_parameters, "see parameters", {{"key", "parameters"}}));
-    return;
-  }
-  const uint64_t W = p["width"].get<uint64_t>(), H = p["height"].get<uint64_t>(), K = p["theta_bins"].get<uint64_t>(),
-                 N = p["phi_bins"].get<uint64_t>(), B = K * N;
-  const std::pair<const char*, std::vector<uint64_t>> shapes[] = {{kHistogramThetaEdgesSection, {K + 1}},
-                                                                  {kHistogramThetaCentresSection, {K}},
-                                                                  {kHistogramPhiEdgesSection, {N + 1}},
-                                                                  {kHistogramCountsSection, {H + 1, W + 1, B}}};
-  for (const auto& [name, shape] : shapes) {
-    const SectionInfo* s = a.find(name);
-    const ElementType type = std::string_view(name) == kHistogramCountsSection ? ElementType::u32 : ElementType::f64;
-    if (!s || s->type != type || s->shape != shape) {
-      out.push_back(make_finding(
-          msg::histogram_section_shape,
-          "'" + std::string(name) + "' should be " + std::string(element_name(type)) + " " + shape_text(shape),
-          {{"section", name}}));
-      return;
-    }
-  }
+// The theta edges (increasing from 0 to the maximum), the theta centres (inside their bins, the edges halfway
+// between them) and the phi edges (exactly histogram_phi_edge): true when all hold, else one finding.
+bool check_histogram_bins(const Asset& a, uint64_t K, uint64_t N, std::vector<Finding>& out) {
   const std::vector<double> edges = a.read<double>(kHistogramThetaEdgesSection);
   const std::vector<double> centres = a.read<double>(kHistogramThetaCentresSection);
   const std::vector<double> phi_edges = a.read<double>(kHistogramPhiEdgesSection);
@@ -64,7 +40,7 @@ void check_histogram(const Asset& a, std::vector<Finding>& out) {
   for (size_t j = 0; j + 1 < edges.size(); ++j) edges_ok = edges_ok && edges[j] < edges[j + 1];  // false for NaN
   if (!edges_ok) {
     out.push_back(make_finding(msg::histogram_bad_theta_edges, "", {{"section", kHistogramThetaEdgesSection}}));
-    return;
+    return false;
   }
   for (size_t j = 0; j < K; ++j) {
     const bool inside = centres[j] >= edges[j] && centres[j] <= edges[j + 1];
@@ -74,15 +50,21 @@ void check_histogram(const Asset& a, std::vector<Finding>& out) {
                                  "centre " + number_text(j) + " = " + number_text(centres[j]) + ", bin [" +
                                      number_text(edges[j]) + ", " + number_text(edges[j + 1]) + "]",
                                  {{"section", kHistogramThetaCentresSection}, {"index", j}}));
-      return;
+      return false;
     }
   }
   for (uint32_t i = 0; i <= N; ++i)
     if (phi_edges[i] != histogram_phi_edge(i, uint32_t(N))) {
       out.push_back(make_finding(msg::histogram_bad_phi_edges, "edge " + number_text(i),
                                  {{"section", kHistogramPhiEdgesSection}, {"index", i}}));
-      return;
+      return false;
     }
+  return true;
+}
+
+// The summed-area counts: zero on the top row and left column, and every texel's differences non-negative and
+// summing to 1 (each texel's normal in exactly one bin).
+void check_histogram_counts(const Asset& a, uint64_t W, uint64_t H, uint64_t B, std::vector<Finding>& out) {
   const std::span<const uint8_t> bytes = a.bytes_of(a.section(kHistogramCountsSection));
   const uint32_t* S = reinterpret_cast<const uint32_t*>(bytes.data());
   const uint64_t row = (W + 1) * B;
@@ -121,6 +103,36 @@ void check_histogram(const Asset& a, std::vector<Finding>& out) {
         return;
       }
     }
+}
+
+void check_histogram(const Asset& a, std::vector<Finding>& out) {
+  const auto& p = a.metadata()["parameters"];
+  if (!p.is_object() || !unsigned_in(p, "width", 1, kHistogramMaxSide) ||
+      !unsigned_in(p, "height", 1, kHistogramMaxSide) || !unsigned_in(p, "theta_bins", 1, kHistogramMaxThetaBins) ||
+      !unsigned_in(p, "theta_bins_requested", 1, kHistogramMaxThetaBins) ||
+      !unsigned_in(p, "phi_bins", 1, kHistogramMaxPhiBins) || !p.contains("method") || p["method"] != "exact" ||
+      p["theta_bins"].get<uint64_t>() > p["theta_bins_requested"].get<uint64_t>()) {
+    out.push_back(make_finding(msg::histogram_bad_parameters, "see parameters", {{"key", "parameters"}}));
+    return;
+  }
+  const uint64_t W = p["width"].get<uint64_t>(), H = p["height"].get<uint64_t>(), K = p["theta_bins"].get<uint64_t>(),
+                 N = p["phi_bins"].get<uint64_t>(), B = K * N;
+  const std::pair<const char*, std::vector<uint64_t>> shapes[] = {{kHistogramThetaEdgesSection, {K + 1}},
+                                                                  {kHistogramThetaCentresSection, {K}},
+                                                                  {kHistogramPhiEdgesSection, {N + 1}},
+                                                                  {kHistogramCountsSection, {H + 1, W + 1, B}}};
+  for (const auto& [name, shape] : shapes) {
+    const SectionInfo* s = a.find(name);
+    const ElementType type = std::string_view(name) == kHistogramCountsSection ? ElementType::u32 : ElementType::f64;
+    if (!s || s->type != type || s->shape != shape) {
+      out.push_back(make_finding(
+          msg::histogram_section_shape,
+          "'" + std::string(name) + "' should be " + std::string(element_name(type)) + " " + shape_text(shape),
+          {{"section", name}}));
+      return;
+    }
+  }
+  if (check_histogram_bins(a, K, N, out)) check_histogram_counts(a, W, H, B, out);
 }
 
 }  // namespace

@@ -23,79 +23,113 @@ double segment_distance(const CurveSegment& s, const Vec2& p, Vec2* nearest) {
   return std::sqrt(ex * ex + ey * ey);  // no hypot: the components are texel-sized, nothing over- or underflows
 }
 
+namespace {
+
+// Every sample's nearest segment (the smallest index on a tie, whatever order the offers come in) and its distance;
+// samples sit at x = i - 0.5, y = j - 0.5.
+class NearestSegments {
+ public:
+  NearestSegments(const std::vector<CurveSegment>& segments, int64_t nx, int64_t ny)
+      : segments_(segments),
+        nx_(nx),
+        ny_(ny),
+        dist_(size_t(nx * ny), std::numeric_limits<double>::infinity()),
+        nearest_(size_t(nx * ny), -1) {}
+
+  static Vec2 position(int64_t i, int64_t j) { return Vec2(double(i) - 0.5, double(j) - 0.5); }
+  const std::vector<double>& distances() const { return dist_; }
+  int64_t nearest(size_t k) const { return nearest_[k]; }
+
+  // Brute force over each segment's bounding box grown by the band, rows in parallel: each row takes the segments
+  // whose box covers it.
+  void offer_within(double band) {
+    struct Box {
+      int64_t i0, i1, j0, j1;
+    };
+    std::vector<Box> boxes(segments_.size());
+    std::vector<std::vector<int64_t>> row_segments(static_cast<size_t>(ny_));
+    for (size_t s = 0; s < segments_.size(); ++s) {
+      const CurveSegment& seg = segments_[s];
+      Box& b = boxes[s];
+      b.i0 = std::max<int64_t>(0, int64_t(std::ceil(std::min(seg.a.x(), seg.b.x()) - band + 0.5)));
+      b.i1 = std::min<int64_t>(nx_ - 1, int64_t(std::floor(std::max(seg.a.x(), seg.b.x()) + band + 0.5)));
+      b.j0 = std::max<int64_t>(0, int64_t(std::ceil(std::min(seg.a.y(), seg.b.y()) - band + 0.5)));
+      b.j1 = std::min<int64_t>(ny_ - 1, int64_t(std::floor(std::max(seg.a.y(), seg.b.y()) + band + 0.5)));
+      for (int64_t j = b.j0; j <= b.j1; ++j) row_segments[size_t(j)].push_back(int64_t(s));
+    }
+    parallel_for(0, ny_, [&](int64_t j) {
+      for (int64_t s : row_segments[size_t(j)])
+        for (int64_t i = boxes[size_t(s)].i0; i <= boxes[size_t(s)].i1; ++i) offer(i, j, s);
+    });
+  }
+
+  // Nearest-segment propagation beyond the band: a forward raster sweep (each sample offered its left and upper
+  // neighbours' segments, then each row right to left), then the same backward.
+  void propagate(Progress& progress) {
+    for (int64_t j = 0; j < ny_; ++j) {
+      for (int64_t i = 0; i < nx_; ++i) {
+        take(i, j, i - 1, j);
+        take(i, j, i - 1, j - 1);
+        take(i, j, i, j - 1);
+        take(i, j, i + 1, j - 1);
+      }
+      for (int64_t i = nx_ - 1; i >= 0; --i) take(i, j, i + 1, j);
+    }
+    progress.advance();
+    for (int64_t j = ny_ - 1; j >= 0; --j) {
+      for (int64_t i = nx_ - 1; i >= 0; --i) {
+        take(i, j, i + 1, j);
+        take(i, j, i + 1, j + 1);
+        take(i, j, i, j + 1);
+        take(i, j, i - 1, j + 1);
+      }
+      for (int64_t i = 0; i < nx_; ++i) take(i, j, i - 1, j);
+    }
+    progress.advance();
+  }
+
+ private:
+  void offer(int64_t i, int64_t j, int64_t s) {
+    const size_t k = size_t(j * nx_ + i);
+    const double d = segment_distance(segments_[size_t(s)], position(i, j));
+    if (d < dist_[k] || (d == dist_[k] && s < nearest_[k])) {
+      dist_[k] = d;
+      nearest_[k] = s;
+    }
+  }
+  // Offers sample (i, j) the nearest segment of sample (ni, nj), if that is inside and has one.
+  void take(int64_t i, int64_t j, int64_t ni, int64_t nj) {
+    if (ni < 0 || nj < 0 || ni >= nx_ || nj >= ny_) return;
+    const int64_t s = nearest_[size_t(nj * nx_ + ni)];
+    if (s >= 0) offer(i, j, s);
+  }
+
+  const std::vector<CurveSegment>& segments_;
+  int64_t nx_, ny_;
+  std::vector<double> dist_;
+  std::vector<int64_t> nearest_;
+};
+
+}  // namespace
+
 DistanceStatistics compute_distance_maps(const std::vector<CurveSegment>& segments, double band, CreaseField& field,
                                          Progress& progress) {
   const int64_t nx = field.samples_x(), ny = field.samples_y();
-  std::vector<double> dist(size_t(nx * ny), std::numeric_limits<double>::infinity());
-  std::vector<int64_t> nearest(size_t(nx * ny), -1);
-  auto position = [](int64_t i, int64_t j) { return Vec2(double(i) - 0.5, double(j) - 0.5); };
-  auto offer = [&](int64_t i, int64_t j, int64_t s) {
-    const size_t k = size_t(j * nx + i);
-    const double d = segment_distance(segments[size_t(s)], position(i, j));
-    if (d < dist[k] || (d == dist[k] && s < nearest[k])) {
-      dist[k] = d;
-      nearest[k] = s;
-    }
-  };
   progress.start("crease: distance map", 4);
-  // Brute force over each segment's bounding box grown by the band (samples at x = i - 0.5), rows in parallel:
-  // each row takes the segments whose box covers it. A sample keeps the nearest segment, the smallest index on
-  // a tie, whatever order the offers come in.
-  struct Box {
-    int64_t i0, i1, j0, j1;
-  };
-  std::vector<Box> boxes(segments.size());
-  std::vector<std::vector<int64_t>> row_segments(static_cast<size_t>(ny));
-  for (size_t s = 0; s < segments.size(); ++s) {
-    const CurveSegment& seg = segments[s];
-    Box& b = boxes[s];
-    b.i0 = std::max<int64_t>(0, int64_t(std::ceil(std::min(seg.a.x(), seg.b.x()) - band + 0.5)));
-    b.i1 = std::min<int64_t>(nx - 1, int64_t(std::floor(std::max(seg.a.x(), seg.b.x()) + band + 0.5)));
-    b.j0 = std::max<int64_t>(0, int64_t(std::ceil(std::min(seg.a.y(), seg.b.y()) - band + 0.5)));
-    b.j1 = std::min<int64_t>(ny - 1, int64_t(std::floor(std::max(seg.a.y(), seg.b.y()) + band + 0.5)));
-    for (int64_t j = b.j0; j <= b.j1; ++j) row_segments[size_t(j)].push_back(int64_t(s));
-  }
-  parallel_for(0, ny, [&](int64_t j) {
-    for (int64_t s : row_segments[size_t(j)])
-      for (int64_t i = boxes[size_t(s)].i0; i <= boxes[size_t(s)].i1; ++i) offer(i, j, s);
-  });
+  NearestSegments found(segments, nx, ny);
+  found.offer_within(band);
   progress.advance();
   DistanceStatistics stats;
   stats.band = band;
-  for (double d : dist) stats.samples_in_band += d <= band;
-  // Nearest-segment propagation beyond the band.
-  auto take = [&](int64_t i, int64_t j, int64_t ni, int64_t nj) {
-    if (ni < 0 || nj < 0 || ni >= nx || nj >= ny) return;
-    const int64_t s = nearest[size_t(nj * nx + ni)];
-    if (s >= 0) offer(i, j, s);
-  };
-  for (int64_t j = 0; j < ny; ++j) {
-    for (int64_t i = 0; i < nx; ++i) {
-      take(i, j, i - 1, j);
-      take(i, j, i - 1, j - 1);
-      take(i, j, i, j - 1);
-      take(i, j, i + 1, j - 1);
-    }
-    for (int64_t i = nx - 1; i >= 0; --i) take(i, j, i + 1, j);
-  }
-  progress.advance();
-  for (int64_t j = ny - 1; j >= 0; --j) {
-    for (int64_t i = nx - 1; i >= 0; --i) {
-      take(i, j, i + 1, j);
-      take(i, j, i + 1, j + 1);
-      take(i, j, i, j + 1);
-      take(i, j, i - 1, j + 1);
-    }
-    for (int64_t i = 0; i < nx; ++i) take(i, j, i - 1, j);
-  }
-  progress.advance();
+  for (double d : found.distances()) stats.samples_in_band += d <= band;
+  found.propagate(progress);
   // The maps from each sample's nearest segment, rows in parallel (the largest distance per row, then over rows).
   std::vector<double> row_max(size_t(ny), 0.0);
   parallel_for(0, ny, [&](int64_t j) {
     for (int64_t i = 0; i < nx; ++i) {
       const size_t k = size_t(j * nx + i);
-      const CurveSegment& seg = segments[size_t(nearest[k])];
-      const Vec2 p = position(i, j), dir = seg.b - seg.a;
+      const CurveSegment& seg = segments[size_t(found.nearest(k))];
+      const Vec2 p = NearestSegments::position(i, j), dir = seg.b - seg.a;
       Vec2 q;
       const double d = segment_distance(seg, p, &q);
       const double cross = dir.x() * (p - seg.a).y() - dir.y() * (p - seg.a).x();

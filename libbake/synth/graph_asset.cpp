@@ -63,6 +63,51 @@ LoadedExemplars load_graph_exemplars(const ExemplarGraph& graph, const std::stri
   return out;
 }
 
+namespace {
+
+// Metadata "graph": the exemplars' ids, the root, the edges (source, destination, r) and whether they are normal maps.
+nlohmann::json graph_json(const ExemplarGraph& graph) {
+  nlohmann::json ids = nlohmann::json::array(), edges = nlohmann::json::array();
+  for (const auto& e : graph.exemplars) ids.push_back(e.id);
+  for (const GraphEdge& e : graph.edges) edges.push_back({e.source, e.destination, e.r});
+  return {{"ids", ids}, {"root", graph.root}, {"edges", edges}, {"normal_map", graph.normal_map}};
+}
+
+// Metadata "superexemplar": each set's (exemplar, level) stack levels and the level the sets repeat from.
+nlohmann::json superexemplar_json(const SuperexemplarLevels& super) {
+  nlohmann::json sets = nlohmann::json::array();
+  for (const auto& set : super.sets) {
+    nlohmann::json levels = nlohmann::json::array();
+    for (const StackLevel& l : set) levels.push_back({l.exemplar, l.level});
+    sets.push_back(levels);
+  }
+  return {{"sets", sets}, {"repeat_from", super.repeat_from}};
+}
+
+// Metadata "statistics": filled and empty candidate slots, how many candidates lie in another exemplar and their
+// mean absolute transfer offset, and the smallest PCA variance kept.
+nlohmann::json graph_statistics(const GraphAnalysis& a) {
+  size_t across = 0, filled = 0;
+  double offset = 0.0;
+  for (size_t s = 0; s < a.candidates.size(); ++s) {
+    if (a.candidates[s].exemplar == kNoCandidate) continue;
+    ++filled;
+    if (a.candidates[s].exemplar != uint32_t(s / a.K / (size_t(a.side) * a.side) / a.levels)) {
+      ++across;
+      for (uint32_t c = 0; c < a.channels; ++c) offset += std::abs(a.transfer[s * a.channels + c]);
+    }
+  }
+  double min_kept = 1.0;
+  for (double v : a.kept_variance) min_kept = std::min(min_kept, v);
+  return nlohmann::json{{"candidates", filled},
+                        {"empty_candidate_slots", a.candidates.size() - filled},
+                        {"across_exemplars", across},
+                        {"mean_abs_transfer_across", across ? offset / double(across * a.channels) : 0.0},
+                        {"min_pca_variance_kept", min_kept}};
+}
+
+}  // namespace
+
 AssetWriter graph_asset_writer(const ExemplarGraph& graph, const GraphAnalysis& a, const GraphAnalysisOptions& options,
                                const nlohmann::json& graph_record, const nlohmann::json& exemplar_records) {
   GraphLayout layout;
@@ -81,18 +126,8 @@ AssetWriter graph_asset_writer(const ExemplarGraph& graph, const GraphAnalysis& 
                             {"exemplars", layout.exemplars},
                             {"candidates", a.K},
                             {"pca_components", options.pca_components}};
-  nlohmann::json ids = nlohmann::json::array(), edges = nlohmann::json::array();
-  for (const auto& e : graph.exemplars) ids.push_back(e.id);
-  for (const GraphEdge& e : graph.edges) edges.push_back({e.source, e.destination, e.r});
-  metadata["graph"] = {{"ids", ids}, {"root", graph.root}, {"edges", edges}, {"normal_map", graph.normal_map}};
-  const SuperexemplarLevels& super = a.superexemplar;
-  nlohmann::json sets = nlohmann::json::array();
-  for (const auto& set : super.sets) {
-    nlohmann::json levels = nlohmann::json::array();
-    for (const StackLevel& l : set) levels.push_back({l.exemplar, l.level});
-    sets.push_back(levels);
-  }
-  metadata["superexemplar"] = {{"sets", sets}, {"repeat_from", super.repeat_from}};
+  metadata["graph"] = graph_json(graph);
+  metadata["superexemplar"] = superexemplar_json(a.superexemplar);
   metadata["conventions"] = {
       {"stacks",
        "level k of L + 1: the exemplar filtered with a periodic Gaussian of standard deviation 2^(L-k-1) "
@@ -104,23 +139,7 @@ AssetWriter graph_asset_writer(const ExemplarGraph& graph, const GraphAnalysis& 
   if (graph.normal_map)
     metadata["conventions"]["normal_convention"] =
         "+Y (the exemplars decoded as their inputs' convention; requested " + graph.convention + ")";
-  size_t across = 0, filled = 0;
-  double offset = 0.0;
-  for (size_t s = 0; s < a.candidates.size(); ++s) {
-    if (a.candidates[s].exemplar == kNoCandidate) continue;
-    ++filled;
-    if (a.candidates[s].exemplar != uint32_t(s / a.K / (size_t(a.side) * a.side) / a.levels)) {
-      ++across;
-      for (uint32_t c = 0; c < a.channels; ++c) offset += std::abs(a.transfer[s * a.channels + c]);
-    }
-  }
-  double min_kept = 1.0;
-  for (double v : a.kept_variance) min_kept = std::min(min_kept, v);
-  metadata["statistics"] = {{"candidates", filled},
-                            {"empty_candidate_slots", a.candidates.size() - filled},
-                            {"across_exemplars", across},
-                            {"mean_abs_transfer_across", across ? offset / double(across * a.channels) : 0.0},
-                            {"min_pca_variance_kept", min_kept}};
+  metadata["statistics"] = graph_statistics(a);
   AssetWriter writer("graph", std::move(metadata));
   std::vector<float> stacks;
   for (const GaussianStack& s : a.stacks)
@@ -131,8 +150,8 @@ AssetWriter graph_asset_writer(const ExemplarGraph& graph, const GraphAnalysis& 
     const bool none = c.exemplar == kNoCandidate;
     for (uint32_t v : {c.exemplar, c.level, c.x, c.y}) candidates.push_back(none ? kGraphNoCandidate : v);
   }
-  writer.add(kGraphStacksSection, layout.stacks_shape(), stacks);
-  writer.add(kGraphCandidatesSection, layout.candidates_shape(), candidates);
+  writer.add(kGraphStacksSection, layout.stacks_shape(), std::move(stacks));
+  writer.add(kGraphCandidatesSection, layout.candidates_shape(), std::move(candidates));
   writer.add(kGraphTransferSection, layout.transfer_shape(), a.transfer);
   std::vector<float> means, bases;
   for (const NeighbourhoodPca& p : a.synthesis_pca) {
@@ -142,8 +161,8 @@ AssetWriter graph_asset_writer(const ExemplarGraph& graph, const GraphAnalysis& 
   }
   layout.depths = uint32_t(a.synthesis_pca.size());
   layout.synthesis_pca_components = kSynthesisPcaComponents;
-  writer.add(kGraphPcaMeanSection, layout.pca_mean_shape(), means);
-  writer.add(kGraphPcaBasisSection, layout.pca_basis_shape(), bases);
+  writer.add(kGraphPcaMeanSection, layout.pca_mean_shape(), std::move(means));
+  writer.add(kGraphPcaBasisSection, layout.pca_basis_shape(), std::move(bases));
   return writer;
 }
 

@@ -38,6 +38,9 @@ int64_t floor_div2(int64_t v) { return v >= 0 ? v / 2 : -((-v + 1) / 2); }
 // v mod m for the power-of-two exemplar side m (formats/graph_layout.h checks it), also for negative v.
 uint32_t wrap(int64_t v, uint32_t m) { return uint32_t(uint64_t(v) & (m - 1)); }
 
+// The transfer offset of a candidate that has none (the same exemplar's texel, or correction without transfer).
+constexpr float kNoOffset[4] = {0, 0, 0, 0};
+
 // A texel competing in correction: pointer, transfer offset and the contrast a loop matches at (0: no loop).
 struct Candidate {
   uint32_t e, k, x, y;
@@ -300,98 +303,110 @@ class Synthesizer {
     for (int l = 0; l < lanes; ++l) out[l] = sum[l];
   }
 
+  // The candidates competing for the pixel whose 3 x 3 neighbours (row by row, around[4] the pixel) are given, in
+  // the order that breaks ties (Eq. 5.1: the earliest wins), into `competing`; returns how many.
+  int competing_candidates(const Pixel* const around[9], bool output_level, Candidate* competing) const {
+    const uint32_t m = g_.layout.side, C = g_.layout.channels, K = g_.layout.candidates;
+    const Pixel& self = *around[4];
+    const uint32_t* admits = &admits_[(size_t(self.e) * g_.layout.levels + self.k) * admits_stride_];
+    // Only texels of the admissible levels of the pixel's level compete (Sec. 5.2.1.2): at an exemplar's
+    // finest level that excludes the pixel's own texel, so correction moves it on to a finer exemplar (or,
+    // through a loop, back up its own stack) instead of getting stuck; a level with no admissible level
+    // keeps its pixel.
+    const auto allowed = [&](uint32_t e, uint32_t k) {
+      return admits[size_t(e) * g_.layout.levels + k] != 0 ||
+             (output_level && e == self.e && k == L_ && self.k == L_ && !self.magnified);
+    };
+    // Deviation [Han08]: a texel one of the 8 neighbours already holds on the same level is not taken (a
+    // coherent neighbour holds a texel one spacing away; the same texel twice magnifies it, and a region of one
+    // texel is its own best match at every later level: issue 18's plateaus).
+    uint64_t held[8];  // the 8 neighbours' texels (texel_key)
+    for (int i = 0, j = 0; i < 9; ++i)
+      if (i != 4) held[j++] = texel_key(around[i]->e, around[i]->k, around[i]->x, around[i]->y);
+    const auto held_by_neighbour = [&](uint64_t key) {
+      bool found = false;
+      for (uint64_t h : held) found |= h == key;
+      return found;
+    };
+    int count = 0;  // the pixel's own texel first
+    const uint64_t self_key = texel_key(self.e, self.k, self.x, self.y);
+    if (allowed(self.e, self.k) && !held_by_neighbour(self_key))
+      competing[count++] = {self.e, self.k, self.x, self.y, kNoOffset, 0.0};
+    // Coherent neighbours often propose the same texel with the same offset: evaluate each once.
+    struct Seen {
+      uint64_t key;
+      const float* b;
+    };
+    Seen seen[64];
+    seen[0] = {self_key, kNoOffset};
+    int seen_count = 1;
+    const auto consider = [&](uint32_t e, uint32_t k, int64_t cx, int64_t cy, const float* b) {
+      if (!allowed(e, k)) return;
+      const uint32_t wx = wrap(cx, m), wy = wrap(cy, m);
+      const uint64_t key = texel_key(e, k, wx, wy);
+      for (int i = 0; i < seen_count; ++i)
+        if (seen[i].key == key && (seen[i].b == b || std::equal(b, b + C, seen[i].b))) return;
+      if (seen_count < 64) seen[seen_count++] = {key, b};
+      if (held_by_neighbour(key)) return;
+      competing[count++] = {e, k, wx, wy, b, loops_.target(self.e, self.k, e, k)};
+    };
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const Pixel& q = *around[(dy + 1) * 3 + dx + 1];
+        const int64_t hq = spacing(q.k);
+        if (dx != 0 || dy != 0) consider(q.e, q.k, int64_t(q.x) - dx * hq, int64_t(q.y) - dy * hq, kNoOffset);
+        const size_t slots = g_.texel(q.e, q.k, q.x, q.y) * K;
+        for (uint32_t c = 0; c < K; ++c) {
+          const uint32_t* cand = &g_.candidates[(slots + c) * 4];
+          if (cand[0] == kGraphNoCandidate) continue;
+          const int64_t hl = spacing(cand[1]);
+          const float* b = o_.correct_inconsistency ? &g_.transfer[(slots + c) * C] : kNoOffset;
+          consider(cand[0], cand[1], int64_t(cand[2]) - dx * hl, int64_t(cand[3]) - dy * hl, b);
+        }
+      }
+    return count;
+  }
+
+  // The pixel at (x, y) after correction: the best of the competing candidates, its offsets added (the pixel itself
+  // when none competes).
+  Pixel corrected_pixel(const std::vector<Pixel>& s, const Region& r, int64_t x, int64_t y, bool output_level) const {
+    const uint32_t C = g_.layout.channels, K = g_.layout.candidates;
+    const Pixel* around[9];  // the 3 x 3 neighbours, row by row (around[4] is the pixel)
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) around[(dy + 1) * 3 + dx + 1] = &at(s, r, x + dx, y + dy);
+    for (const Pixel* q : around)  // their candidate slots are read below: fetched while n is gathered
+      __builtin_prefetch(&g_.candidates[g_.texel(q->e, q->k, q->x, q->y) * K * 4]);
+    double n[25 * 4];
+    neighbourhood(s, r, x, y, n);
+    const Pixel& self = *around[4];
+    Candidate competing[1 + 8 + 9 * kMaxCandidates];
+    const int count = competing_candidates(around, output_level, competing);
+    Pixel best = self;
+    const int winner = first_best(n, competing, count);
+    if (winner >= 0) {
+      const Candidate& w = competing[winner];
+      best.e = w.e;
+      best.k = w.k;
+      best.x = w.x;
+      best.y = w.y;
+      for (uint32_t c = 0; c < C; ++c) {
+        best.R[c] = self.R[c] + w.b[c];
+        best.loop[c] = w.contrast > 0.0 ? self.loop[c] + w.b[c] : self.loop[c];
+      }
+    }
+    return best;
+  }
+
   // One sub-pass: the pixels of one parity read the level as it was before it and are written after it.
   void correct(std::vector<Pixel>& s, const Region& r, int parity, bool output_level) const {
-    const uint32_t m = g_.layout.side, C = g_.layout.channels, K = g_.layout.candidates;
-    const float zero[4] = {0, 0, 0, 0};
     // The corrected pixels of this parity, two to a row and column apart: row (y - y0) / 2, column (x - x0) / 2.
     const int64_t stride = r.width() / 2 + 1;
     std::vector<Pixel> corrected(size_t((r.height() / 2 + 1) * stride));
     parallel_for(r.y0, r.y1, [&](int64_t y) {
       if (((y & 1) << 1 | 0) != (parity & 2)) return;
-      double n[25 * 4];
-      for (int64_t x = r.x0; x < r.x1; ++x) {
-        if ((x & 1) != (parity & 1)) continue;
-        const Pixel* around[9];  // the 3 x 3 neighbours, row by row (around[4] is the pixel)
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dx = -1; dx <= 1; ++dx) around[(dy + 1) * 3 + dx + 1] = &at(s, r, x + dx, y + dy);
-        for (const Pixel* q : around)  // their candidate slots are read below: fetched while n is gathered
-          __builtin_prefetch(&g_.candidates[g_.texel(q->e, q->k, q->x, q->y) * K * 4]);
-        neighbourhood(s, r, x, y, n);
-        const Pixel& self = *around[4];
-        const uint32_t* admits = &admits_[(size_t(self.e) * g_.layout.levels + self.k) * admits_stride_];
-        // Only texels of the admissible levels of the pixel's level compete (Sec. 5.2.1.2): at an exemplar's
-        // finest level that excludes the pixel's own texel, so correction moves it on to a finer exemplar (or,
-        // through a loop, back up its own stack) instead of getting stuck; a level with no admissible level
-        // keeps its pixel.
-        const auto allowed = [&](uint32_t e, uint32_t k) {
-          return admits[size_t(e) * g_.layout.levels + k] != 0 ||
-                 (output_level && e == self.e && k == L_ && self.k == L_ && !self.magnified);
-        };
-        Pixel best = self;
-        // Deviation [Han08]: a texel one of the 8 neighbours already holds on the same level is not taken (a
-        // coherent neighbour holds a texel one spacing away; the same texel twice magnifies it, and a region of one
-        // texel is its own best match at every later level: issue 18's plateaus).
-        uint64_t held[8];  // the 8 neighbours' texels (texel_key)
-        for (int i = 0, j = 0; i < 9; ++i)
-          if (i != 4) held[j++] = texel_key(around[i]->e, around[i]->k, around[i]->x, around[i]->y);
-        const auto held_by_neighbour = [&](uint64_t key) {
-          bool found = false;
-          for (uint64_t h : held) found |= h == key;
-          return found;
-        };
-        // The competing candidates in the order that breaks ties (Eq. 5.1: the earliest wins), the pixel's own first.
-        Candidate competing[1 + 8 + 9 * kMaxCandidates];
-        int count = 0;
-        const uint64_t self_key = texel_key(self.e, self.k, self.x, self.y);
-        if (allowed(self.e, self.k) && !held_by_neighbour(self_key))
-          competing[count++] = {self.e, self.k, self.x, self.y, zero, 0.0};
-        // Coherent neighbours often propose the same texel with the same offset: evaluate each once.
-        struct Seen {
-          uint64_t key;
-          const float* b;
-        };
-        Seen seen[64];
-        seen[0] = {self_key, zero};
-        int seen_count = 1;
-        const auto consider = [&](uint32_t e, uint32_t k, int64_t cx, int64_t cy, const float* b) {
-          if (!allowed(e, k)) return;
-          const uint32_t wx = wrap(cx, m), wy = wrap(cy, m);
-          const uint64_t key = texel_key(e, k, wx, wy);
-          for (int i = 0; i < seen_count; ++i)
-            if (seen[i].key == key && (seen[i].b == b || std::equal(b, b + C, seen[i].b))) return;
-          if (seen_count < 64) seen[seen_count++] = {key, b};
-          if (held_by_neighbour(key)) return;
-          competing[count++] = {e, k, wx, wy, b, loops_.target(self.e, self.k, e, k)};
-        };
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dx = -1; dx <= 1; ++dx) {
-            const Pixel& q = *around[(dy + 1) * 3 + dx + 1];
-            const int64_t hq = spacing(q.k);
-            if (dx != 0 || dy != 0) consider(q.e, q.k, int64_t(q.x) - dx * hq, int64_t(q.y) - dy * hq, zero);
-            const size_t slots = g_.texel(q.e, q.k, q.x, q.y) * K;
-            for (uint32_t c = 0; c < K; ++c) {
-              const uint32_t* cand = &g_.candidates[(slots + c) * 4];
-              if (cand[0] == kGraphNoCandidate) continue;
-              const int64_t hl = spacing(cand[1]);
-              const float* b = o_.correct_inconsistency ? &g_.transfer[(slots + c) * C] : zero;
-              consider(cand[0], cand[1], int64_t(cand[2]) - dx * hl, int64_t(cand[3]) - dy * hl, b);
-            }
-          }
-        const int winner = first_best(n, competing, count);
-        if (winner >= 0) {
-          const Candidate& w = competing[winner];
-          best.e = w.e;
-          best.k = w.k;
-          best.x = w.x;
-          best.y = w.y;
-          for (uint32_t c = 0; c < C; ++c) {
-            best.R[c] = self.R[c] + w.b[c];
-            best.loop[c] = w.contrast > 0.0 ? self.loop[c] + w.b[c] : self.loop[c];
-          }
-        }
-        corrected[size_t((y - r.y0) / 2 * stride + (x - r.x0) / 2)] = best;
-      }
+      for (int64_t x = r.x0; x < r.x1; ++x)
+        if ((x & 1) == (parity & 1))
+          corrected[size_t((y - r.y0) / 2 * stride + (x - r.x0) / 2)] = corrected_pixel(s, r, x, y, output_level);
     });
     parallel_for(r.y0, r.y1, [&](int64_t y) {
       if (((y & 1) << 1 | 0) != (parity & 2)) return;
@@ -403,13 +418,12 @@ class Synthesizer {
 
   double mean_error(const std::vector<Pixel>& s, const Region& r) const {
     std::vector<double> rows(size_t(r.height()), 0.0);
-    const float zero[4] = {0, 0, 0, 0};
     parallel_for(r.y0, r.y1, [&](int64_t y) {
       double n[25 * 4];
       for (int64_t x = r.x0; x < r.x1; ++x) {
         neighbourhood(s, r, x, y, n);
         const Pixel& p = at(s, r, x, y);
-        rows[size_t(y - r.y0)] += error(n, p.e, p.k, p.x, p.y, zero) / 25.0;
+        rows[size_t(y - r.y0)] += error(n, p.e, p.k, p.x, p.y, kNoOffset) / 25.0;
       }
     });
     double sum = 0.0;
