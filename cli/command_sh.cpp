@@ -19,7 +19,7 @@ class ShCommand : public NormalMapBakingCommand {
   void bake(Progress& progress) override {
     options_ = sh_bake_options(parameters());
     levels_ = mip_level_sizes(map().map.width, map().map.height).size();
-    asset_ = bake_sh_asset(map(), options_, progress);
+    asset_ = bake_sh_asset(take_map(), options_, progress);
   }
 
   std::string summary() const override {

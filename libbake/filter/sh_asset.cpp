@@ -77,8 +77,8 @@ class StoredShLevels final : public ShRowSink {
 };
 
 template <typename Stored>
-AssetWriter write_sh_asset(const LoadedNormalMap& input, const ShBakeOptions& options, Progress& progress) {
-  const NormalMap& map = input.map;
+AssetWriter write_sh_asset(LoadedNormalMap& input, const ShBakeOptions& options, Progress& progress) {
+  NormalMap& map = input.map;
   StoredShLevels<Stored> stored;
   stream_sh_pyramid(map, options.order, stored, progress);
   const int count = sh_count(options.order);
@@ -111,8 +111,8 @@ AssetWriter write_sh_asset(const LoadedNormalMap& input, const ShBakeOptions& op
   metadata["statistics"] = {{"mean_normal_length_per_level", mean_length}, {"max_rounding_error_per_level", rounding}};
   AssetWriter writer("sh", std::move(metadata));
   static_assert(sizeof(Vec3f) == 3 * sizeof(float));
-  writer.add("normals", {map.height, map.width, 3},
-             std::span<const float>(map.texels.front().data(), map.texels.size() * 3));
+  // Vec3f is three packed floats: the texel array is the [H, W, 3] section as it is, taken over (not copied).
+  writer.add_bytes("normals", ElementType::f32, {map.height, map.width, 3}, std::move(map.texels));
   for (size_t k = 0; k < stored.levels().size(); ++k) {
     auto& level = stored.levels()[k];
     writer.add("level_" + std::to_string(k + 1), {level.size.height, level.size.width, uint64_t(count)},
@@ -126,7 +126,7 @@ AssetWriter write_sh_asset(const LoadedNormalMap& input, const ShBakeOptions& op
 
 }  // namespace
 
-AssetWriter bake_sh_asset(const LoadedNormalMap& input, const ShBakeOptions& options, Progress& progress) {
+AssetWriter bake_sh_asset(LoadedNormalMap input, const ShBakeOptions& options, Progress& progress) {
   return options.precision == ShPrecision::f16 ? write_sh_asset<Imath::half>(input, options, progress)
                                                : write_sh_asset<float>(input, options, progress);
 }

@@ -27,7 +27,8 @@ struct ShBakeOptions {
 // coefficients, precision, window}; statistics per level: mean length of the mean normal and the largest
 // rounding error of the stored coefficients. The pyramid's rows are converted to the stored precision as they
 // are computed (stream_sh_pyramid), in parallel, each straight into its section's buffer, which the writer
-// then takes over: no level is held in f32 beside its f16 copy, and no buffer is copied.
-AssetWriter bake_sh_asset(const LoadedNormalMap& input, const ShBakeOptions& options, Progress& progress);
+// then takes over: no level is held in f32 beside its f16 copy, and no buffer is copied (the input's normals
+// become section `normals`: pass the map by std::move when it is not needed afterwards).
+AssetWriter bake_sh_asset(LoadedNormalMap input, const ShBakeOptions& options, Progress& progress);
 
 }  // namespace mbk

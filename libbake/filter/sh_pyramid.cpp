@@ -100,6 +100,12 @@ class KeepLevels final : public ShRowSink {
 
 }  // namespace
 
+// Levels built from the normals in one pass (stream_sh_pyramid): at most 1 + kMaxChain, the top one with at least
+// kMinChainTopRows rows when there are more than two (a task per row of the top level; a task holds up to
+// 2^kMaxChain rows of the finest, 21 MiB at 8192^2, order 8).
+constexpr size_t kMaxChain = 4;
+constexpr uint32_t kMinChainTopRows = 64;
+
 void stream_sh_pyramid(const NormalMap& map, int order, ShRowSink& sink, Progress& progress) {
   const ShBasisEvaluator basis(order);
   const int count = basis.count();
@@ -113,7 +119,13 @@ void stream_sh_pyramid(const NormalMap& map, int order, ShRowSink& sink, Progres
   size_t k = 1;
   while (k < levels) {
     const LevelSize size = sizes[k];
-    const bool parent_nests = k + 1 < levels && nests(size, sizes[k + 1]);
+    // How many coarser levels nest in turn above level k: up to kMaxChain, and beyond the first only while the top
+    // one keeps enough rows for the threads (a level that nests in level k is always built with it: level k is
+    // never held whole).
+    size_t chain = 0;
+    while (chain < kMaxChain && k + chain + 1 < levels && nests(sizes[k + chain], sizes[k + chain + 1]) &&
+           (chain == 0 || sizes[k + chain + 1].height >= kMinChainTopRows))
+      ++chain;
     std::vector<float> level;  // level k in f32, kept only when level k + 1 is built from it
     if (k >= 2 && nests(sizes[k - 1], size)) {
       level.resize(size_t(size.height) * row_floats(k));
@@ -125,27 +137,35 @@ void stream_sh_pyramid(const NormalMap& map, int order, ShRowSink& sink, Progres
         sink.take_row(k, uint32_t(row), out);
       });
       progress.advance();
-    } else if (parent_nests) {
-      // From the normals, one group of sy rows per row of level k + 1, which is built from them in the same pass:
-      // level k is never held whole.
+    } else if (chain > 0) {
+      // Levels k..k + chain in one pass from the normals: a task per row of the top level builds the group of
+      // level-k rows under it from the normals, then each coarser level's rows of the group from the finer ones.
+      // Only the top level is held whole (in `level`); at 2048^2 levels 1..5, where level 2 alone is 85 MiB in f32.
       const NormalsLevel from_normals(map, basis, size);
-      const LevelSize parent = sizes[k + 1];
-      const uint32_t sx = size.width / parent.width, sy = size.height / parent.height;
-      level.resize(size_t(parent.height) * row_floats(k + 1));
-      parallel_for(0, parent.height, [&](int64_t row) {
-        thread_local std::vector<float> group;
-        group.resize(sy * row_floats(k));
-        for (uint32_t dy = 0; dy < sy; ++dy) {
-          float* out = &group[dy * row_floats(k)];
-          from_normals.row(uint32_t(row) * sy + dy, out);
-          sink.take_row(k, uint32_t(row) * sy + dy, out);
+      const size_t top = k + chain;
+      level.resize(size_t(sizes[top].height) * row_floats(top));
+      parallel_for(0, sizes[top].height, [&](int64_t row) {
+        thread_local std::vector<float> group[kMaxChain + 1];  // group[i]: the rows of level k + i under `row`
+        for (size_t i = 0; i <= chain; ++i) {
+          const uint32_t rows = sizes[k + i].height / sizes[top].height, first = uint32_t(row) * rows;
+          group[i].resize(rows * row_floats(k + i));
+          for (uint32_t r = 0; r < rows; ++r) {
+            float* out = &group[i][r * row_floats(k + i)];
+            if (i == 0) {
+              from_normals.row(first + r, out);
+            } else {
+              const LevelSize finer_size = sizes[k + i - 1], here = sizes[k + i];
+              const uint32_t sy = finer_size.height / here.height;
+              children_row(&group[i - 1][r * sy * row_floats(k + i - 1)], finer_size.width,
+                           finer_size.width / here.width, sy, here.width, count, out);
+            }
+            sink.take_row(k + i, first + r, out);
+          }
         }
-        float* out = &level[size_t(row) * row_floats(k + 1)];
-        children_row(group.data(), size.width, sx, sy, parent.width, count, out);
-        sink.take_row(k + 1, uint32_t(row), out);
+        std::copy(group[chain].begin(), group[chain].end(), &level[size_t(row) * row_floats(top)]);
       });
-      progress.advance(2);
-      ++k;  // level k + 1 is done too; `level` holds it
+      progress.advance(chain + 1);
+      k = top;  // levels up to `top` are done; `level` holds it
     } else {
       const NormalsLevel from_normals(map, basis, size);
       parallel_for(0, size.height, [&](int64_t row) {

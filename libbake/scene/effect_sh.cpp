@@ -23,9 +23,8 @@ EffectInfo sh_effect() {
                                      parameters,
                                      {map},
                                      [map, bake](Progress& progress) {
-                                       const LoadedNormalMap input =
-                                           load_normal_map(map.path, map.normal_map->load_options());
-                                       return bake_sh_asset(input, bake, progress);
+                                       return bake_sh_asset(load_normal_map(map.path, map.normal_map->load_options()),
+                                                            bake, progress);
                                      },
                                      use.options}};
   };

@@ -62,6 +62,39 @@ INSTANTIATE_TEST_SUITE_P(OddDegenerateAndPowerOfTwo, ShPyramidSizes,
                                            std::pair{1u, 6u}, std::pair{10u, 3u}, std::pair{12u, 12u},
                                            std::pair{1u, 1u}));
 
+// At a realistic size the first levels are built in one pass from the normals, a level's rows from the finer ones
+// of the same group (stream_sh_pyramid's chain: at 1024 x 576 levels 1..3, then level 4 from level 3): every texel
+// of levels 1..6, where 2^k divides both sides, is the mean of Y_lm over its 2^k x 2^k block of normals,
+// accumulated here in double from the basis values of the finest texels.
+TEST(ShPyramid, ChainOfNestedLevelsIsTheBlockMeanAtRealisticSize) {
+  constexpr uint32_t W = 1024, H = 576;
+  constexpr int kOrder = 4;
+  const NormalMap map = test::random_normal_map(W, H, 77);
+  const ShPyramid p = build_sh_pyramid(map, kOrder, Progress::silent());
+  const ShBasisEvaluator basis(kOrder);
+  const size_t count = size_t(basis.count());
+  std::vector<double> y(size_t(W) * H * count);
+  for (size_t t = 0; t < map.texels.size(); ++t) {
+    const auto v = basis.evaluate(map.texels[t].cast<double>());
+    std::copy(v.begin(), v.end(), y.begin() + t * count);
+  }
+  for (uint32_t k = 1; k <= 6; ++k) {
+    const ShLevel& level = p.levels[k - 1];
+    const uint32_t side = 1u << k;
+    ASSERT_EQ(level.width, W / side);
+    ASSERT_EQ(level.height, H / side);
+    for (uint32_t j = 0; j < level.height; ++j)
+      for (uint32_t i = 0; i < level.width; ++i)
+        for (size_t c = 0; c < count; ++c) {
+          double sum = 0.0;
+          for (uint32_t yy = j * side; yy < (j + 1) * side; ++yy)
+            for (uint32_t xx = i * side; xx < (i + 1) * side; ++xx) sum += y[(size_t(yy) * W + xx) * count + c];
+          ASSERT_NEAR(level.texel(i, j, int(count))[c], sum / double(side * side), 2e-6)
+              << "level " << k << " texel (" << i << ", " << j << ") coefficient " << c;
+        }
+  }
+}
+
 TEST(ShPyramid, TwoByTwoBlockIsMeanOfFourDeltas) {
   const NormalMap map = test::random_normal_map(2, 2, 5);
   const ShPyramid p = build_sh_pyramid(map, 4, Progress::silent());
