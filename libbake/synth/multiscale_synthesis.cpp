@@ -18,6 +18,10 @@ constexpr uint32_t kMaxLevel = 40;
 
 constexpr int kLanes = 4;                // candidates whose errors are summed side by side
 constexpr uint32_t kMaxCandidates = 16;  // K at most (formats/graph_layout.h)
+// kLanes floats or doubles side by side (GCC vector extensions: SSE2 pairs on baseline x86-64, one AVX register where
+// the target has it); element-wise IEEE operations, so each lane computes exactly what the scalar code does.
+typedef float LaneFloats __attribute__((vector_size(kLanes * sizeof(float))));
+typedef double LaneDoubles __attribute__((vector_size(kLanes * sizeof(double))));
 
 struct Pixel {
   uint32_t e = 0, k = 0, x = 0, y = 0;  // texel pointer
@@ -47,6 +51,52 @@ struct Candidate {
   const float* b;
   double contrast;
 };
+
+// The 5 x 5 samples of kLanes candidates (their toroidal rows and columns in their stack levels) and their transfer
+// offsets per channel.
+struct LaneSamples {
+  const float* row[kLanes][2 * kReach + 1];
+  size_t column[kLanes][2 * kReach + 1];
+  LaneFloats b[4];
+};
+
+// Eq. 5.1's sums of the lanes against the neighbourhood n, as one vector: each lane's operations are the scalar
+// error's, in its order (float texel + offset, then the double difference squared and added), so each sum is bit for
+// bit the one-by-one sum (no contraction into fused multiply-adds: ISO C++ mode). Stops after the first row of samples
+// at which every lane has reached bound.
+template <uint32_t C>
+[[gnu::always_inline]] inline void lane_sums(const LaneSamples& s, const double* n, double bound, double* out) {
+  LaneDoubles sum = {0, 0, 0, 0};
+  for (int dy = 0; dy < 2 * kReach + 1; ++dy) {
+    for (int dx = 0; dx < 2 * kReach + 1; ++dx, n += C) {
+      const float* v[kLanes];
+      for (int l = 0; l < kLanes; ++l) v[l] = s.row[l][dy] + s.column[l][dx];
+      for (uint32_t ch = 0; ch < C; ++ch) {
+        const LaneFloats value = LaneFloats{v[0][ch], v[1][ch], v[2][ch], v[3][ch]} + s.b[ch];
+        const LaneDoubles d = n[ch] - __builtin_convertvector(value, LaneDoubles);
+        sum += d * d;
+      }
+    }
+    if (sum[0] >= bound && sum[1] >= bound && sum[2] >= bound && sum[3] >= bound) break;  // checked once a row
+  }
+  for (int l = 0; l < kLanes; ++l) out[l] = sum[l];
+}
+
+// lane_sums for C channels, compiled for AVX2 as well as the baseline and chosen once at load (the same bits either
+// way: the lanes' operations are element-wise IEEE operations).
+[[gnu::target_clones("avx2", "default")]] void lane_sums(const LaneSamples& s, const double* n, double bound,
+                                                         uint32_t C, double* out) {
+  switch (C) {  // the channel count as a constant: unrolled sample loops
+    case 1:
+      return lane_sums<1>(s, n, bound, out);
+    case 2:
+      return lane_sums<2>(s, n, bound, out);
+    case 3:
+      return lane_sums<3>(s, n, bound, out);
+    default:
+      return lane_sums<4>(s, n, bound, out);
+  }
+}
 
 class Synthesizer {
  public:
@@ -82,11 +132,20 @@ class Synthesizer {
     uint64_t work = 0;  // pixels over all levels: the finest level is most of it
     for (const Region& r : region) work += uint64_t(r.width() * r.height());
     progress.start("synthesis", work);
+    // Buffers for the largest level (a coarse region can be the larger one: every level grows by the same padding).
+    size_t largest = 0, largest_parity = 0;
+    for (const Region& r : region) {
+      largest = std::max(largest, size_t(r.width() * r.height()));
+      largest_parity = std::max(largest_parity, size_t((r.height() / 2 + 1) * (r.width() / 2 + 1)));
+    }
+    corrected_.resize(largest_parity);
+    colour_.reserve(largest * g_.layout.channels);
     std::vector<Pixel> level(size_t(region[0].width() * region[0].height()));
     for (Pixel& p : level) p.e = g_.layout.root;  // texel (0, 0) of the root's level 0
     for (uint32_t t = 0; t <= o_.level; ++t) {
       if (t > 0) level = upsample(level, region[t - 1], region[t]);
       jitter(level, region[t], t);
+      fill_colours(level, region[t]);
       for (uint32_t pass = 0; pass < o_.passes; ++pass)
         for (int parity = 0; parity < 4; ++parity) correct(level, region[t], parity, t == o_.level);
       if (stats) stats->matching_error.push_back(mean_error(level, region[t]));
@@ -174,6 +233,20 @@ class Synthesizer {
     });
   }
 
+  // The synthesized colour E(S[p]) + R_p of every pixel of the level (what neighbourhoods read), kept by correct().
+  void fill_colours(const std::vector<Pixel>& s, const Region& r) {
+    const uint32_t C = g_.layout.channels;
+    colour_.resize(s.size() * C);
+    parallel_for(0, r.height(), [&](int64_t y) {
+      for (size_t i = size_t(y * r.width()); i < size_t((y + 1) * r.width()); ++i) set_colour(s[i], i);
+    });
+  }
+  void set_colour(const Pixel& p, size_t i) {
+    const uint32_t C = g_.layout.channels;
+    const float* v = &g_.stacks[g_.texel(p.e, p.k, p.x, p.y) * C];
+    for (uint32_t c = 0; c < C; ++c) colour_[i * C + c] = v[c] + p.R[c];
+  }
+
   // The synthesized 5 x 5 neighbourhood of p in p's own colour space: E(S[p + Delta]) + R_{p + Delta} - R_p.
   void neighbourhood(const std::vector<Pixel>& s, const Region& r, int64_t x, int64_t y, double* out) const {
     const uint32_t C = g_.layout.channels;
@@ -181,11 +254,10 @@ class Synthesizer {
     int64_t column[2 * kReach + 1];  // clamped to the region, as at()
     for (int d = -kReach; d <= kReach; ++d) column[d + kReach] = std::clamp(x + d, r.x0, r.x1 - 1) - r.x0;
     for (int dy = -kReach; dy <= kReach; ++dy) {
-      const Pixel* row = &s[size_t((std::clamp(y + dy, r.y0, r.y1 - 1) - r.y0) * r.width())];
+      const float* row = &colour_[size_t((std::clamp(y + dy, r.y0, r.y1 - 1) - r.y0) * r.width()) * C];
       for (int64_t cx : column) {
-        const Pixel& q = row[cx];
-        const float* v = &g_.stacks[g_.texel(q.e, q.k, q.x, q.y) * C];
-        for (uint32_t c = 0; c < C; ++c) *out++ = float(v[c] + q.R[c] - self.R[c]);
+        const float* v = row + size_t(cx) * C;
+        for (uint32_t c = 0; c < C; ++c) *out++ = v[c] - self.R[c];
       }
     }
   }
@@ -259,47 +331,20 @@ class Synthesizer {
   // error() of up to kLanes candidates side by side (no loop transform), stopped (at values >= bound) after the first
   // row of samples at which all have reached bound.
   void lane_errors(const double* n, const Candidate* c, int lanes, double bound, double* out) const {
-    switch (g_.layout.channels) {  // the channel count as a constant: unrolled sample loops
-      case 1:
-        return lane_errors<1>(n, c, lanes, bound, out);
-      case 2:
-        return lane_errors<2>(n, c, lanes, bound, out);
-      case 3:
-        return lane_errors<3>(n, c, lanes, bound, out);
-      default:
-        return lane_errors<4>(n, c, lanes, bound, out);
-    }
-  }
-  template <uint32_t C>
-  void lane_errors(const double* n, const Candidate* c, int lanes, double bound, double* out) const {
-    const uint32_t m = g_.layout.side;
-    const float* row[kLanes][2 * kReach + 1];  // each lane's toroidal sample rows and columns
-    size_t column[kLanes][2 * kReach + 1];
-    const float* b[kLanes];
+    const uint32_t m = g_.layout.side, C = g_.layout.channels;
+    LaneSamples samples;
     for (int l = 0; l < kLanes; ++l) {
       const Candidate& cl = c[std::min(l, lanes - 1)];  // spare lanes repeat the last candidate
       const int64_t h = spacing(cl.k);
       const float* level = &g_.stacks[g_.texel(cl.e, cl.k, 0, 0) * C];
       for (int d = -kReach; d <= kReach; ++d) {
-        row[l][d + kReach] = level + size_t(wrap(cl.y + d * h, m)) * m * C;
-        column[l][d + kReach] = size_t(wrap(cl.x + d * h, m)) * C;
+        samples.row[l][d + kReach] = level + size_t(wrap(cl.y + d * h, m)) * m * C;
+        samples.column[l][d + kReach] = size_t(wrap(cl.x + d * h, m)) * C;
       }
-      b[l] = cl.b;
+      for (uint32_t ch = 0; ch < C; ++ch) samples.b[ch][l] = cl.b[ch];
     }
-    double sum[kLanes] = {};
-    for (int dy = 0; dy < 2 * kReach + 1; ++dy) {
-      for (int dx = 0; dx < 2 * kReach + 1; ++dx, n += C)
-        for (int l = 0; l < kLanes; ++l) {
-          const float* v = row[l][dy] + column[l][dx];
-          for (uint32_t ch = 0; ch < C; ++ch) {
-            const double d = n[ch] - (v[ch] + b[l][ch]);
-            sum[l] += d * d;
-          }
-        }
-      bool all = true;  // checked once a row
-      for (int l = 0; l < kLanes; ++l) all = all && sum[l] >= bound;
-      if (all) break;
-    }
+    double sum[kLanes];
+    lane_sums(samples, n, bound, C, sum);
     for (int l = 0; l < lanes; ++l) out[l] = sum[l];
   }
 
@@ -340,12 +385,17 @@ class Synthesizer {
     Seen seen[64];
     seen[0] = {self_key, kNoOffset};
     int seen_count = 1;
+    // One bit per hashed key: a key whose bit is clear is in no entry of `seen`, and skips the scan.
+    const auto key_bit = [](uint64_t key) { return uint64_t(1) << ((key * 0x9e3779b97f4a7c15ull) >> 58); };
+    uint64_t seen_bits = key_bit(self_key);
     const auto consider = [&](uint32_t e, uint32_t k, int64_t cx, int64_t cy, const float* b) {
       if (!allowed(e, k)) return;
       const uint32_t wx = wrap(cx, m), wy = wrap(cy, m);
-      const uint64_t key = texel_key(e, k, wx, wy);
-      for (int i = 0; i < seen_count; ++i)
-        if (seen[i].key == key && (seen[i].b == b || std::equal(b, b + C, seen[i].b))) return;
+      const uint64_t key = texel_key(e, k, wx, wy), bit = key_bit(key);
+      if (seen_bits & bit)
+        for (int i = 0; i < seen_count; ++i)
+          if (seen[i].key == key && (seen[i].b == b || std::equal(b, b + C, seen[i].b))) return;
+      seen_bits |= bit;
       if (seen_count < 64) seen[seen_count++] = {key, b};
       if (held_by_neighbour(key)) return;
       competing[count++] = {e, k, wx, wy, b, loops_.target(self.e, self.k, e, k)};
@@ -398,10 +448,11 @@ class Synthesizer {
   }
 
   // One sub-pass: the pixels of one parity read the level as it was before it and are written after it.
-  void correct(std::vector<Pixel>& s, const Region& r, int parity, bool output_level) const {
-    // The corrected pixels of this parity, two to a row and column apart: row (y - y0) / 2, column (x - x0) / 2.
+  void correct(std::vector<Pixel>& s, const Region& r, int parity, bool output_level) {
+    // The corrected pixels of this parity, two to a row and column apart: row (y - y0) / 2, column (x - x0) / 2; one
+    // buffer for every sub-pass and level, sized for the largest level by run().
     const int64_t stride = r.width() / 2 + 1;
-    std::vector<Pixel> corrected(size_t((r.height() / 2 + 1) * stride));
+    std::vector<Pixel>& corrected = corrected_;
     parallel_for(r.y0, r.y1, [&](int64_t y) {
       if (((y & 1) << 1 | 0) != (parity & 2)) return;
       for (int64_t x = r.x0; x < r.x1; ++x)
@@ -411,8 +462,11 @@ class Synthesizer {
     parallel_for(r.y0, r.y1, [&](int64_t y) {
       if (((y & 1) << 1 | 0) != (parity & 2)) return;
       for (int64_t x = r.x0; x < r.x1; ++x)
-        if ((x & 1) == (parity & 1))
-          s[size_t((y - r.y0) * r.width() + (x - r.x0))] = corrected[size_t((y - r.y0) / 2 * stride + (x - r.x0) / 2)];
+        if ((x & 1) == (parity & 1)) {
+          const size_t i = size_t((y - r.y0) * r.width() + (x - r.x0));
+          s[i] = corrected[size_t((y - r.y0) / 2 * stride + (x - r.x0) / 2)];
+          set_colour(s[i], i);
+        }
     });
   }
 
@@ -449,6 +503,8 @@ class Synthesizer {
   // finest level (loop_transitions.h); [(i * levels + k) * admits_stride_ + j * levels + l].
   size_t admits_stride_;
   std::vector<uint32_t> admits_;
+  std::vector<Pixel> corrected_;  // correct()'s buffer
+  std::vector<float> colour_;     // fill_colours()
 };
 
 }  // namespace
