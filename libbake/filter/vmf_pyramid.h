@@ -26,7 +26,8 @@
 //   texel's lobes are first permuted to the slots that best match t (greedy on alpha_a mu_a . t_b); when
 //   C > 0 (--align) the texel is then refitted with Eq. (7.26), mu_j = normalize(r_j + C t_j). The top level
 //   orders its lobes by decreasing amplitude. Deviation [Han07]: the paper builds aligned lobes top-down in
-//   scanline order; wavefronts use the same neighbours except up-right and let a level run in parallel.
+//   scanline order; wavefronts use the same neighbours except up-right and let a level run in parallel
+//   (by tiles of 32 x 32 texels along anti-diagonals of tiles, scanline order in a tile: the same result).
 // - Storage per lobe: (alpha, alpha r), so that trilinear interpolation of the four floats is meaningful
 //   (Sec. 7.6.4.2): r~ = T(alpha r) / T(alpha), kappa~ = A^-1(|r~|) (capped), mu~ = r~ / |r~|. With C > 0 the
 //   stored r is |r| mu_aligned (the aligned direction with the fitted concentration).
