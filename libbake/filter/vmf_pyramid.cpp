@@ -257,10 +257,10 @@ EmReport fit_texel(const PyramidFit& p, const VmfLevel& finer, const std::vector
   std::vector<VmfComponent> mixture = farthest_apart_seeds(candidates, J, SeedRule::farthest);
   std::vector<VmfComponent> weighted = farthest_apart_seeds(candidates, J, SeedRule::mass_weighted);
   const std::vector<VmfComponent> mixture_before_fit = mixture;
-  // On chunks EM is cheap, and plain EM's path is kept (SQUAREM's jumps can pass an atom's basin by).
-  EmOptions plain = p.options.em, guarded = p.options.em;
+  // SQUAREM on chunks too: lobes at the kappa cap (atoms) are held, not extrapolated (vmf_mixture.h), and it
+  // halves the chunked E-steps with a fit no worse on the generated kinds and the real maps (docs/BENCHMARKS.md).
+  EmOptions plain = p.options.em;
   plain.reseed = false;
-  if (!chunks.empty()) plain.accelerate = guarded.accelerate = false;
   const EmReport first = fit_vmf_mixture(fitted, mixture, plain);
   int start_iterations = first.iterations;
   if (!same_lobes(mixture_before_fit, weighted)) {  // the same seeds (in another order) would give the same fit
@@ -268,13 +268,11 @@ EmReport fit_texel(const PyramidFit& p, const VmfLevel& finer, const std::vector
     if (second.log_likelihood > first.log_likelihood) mixture = std::move(weighted);
     start_iterations += second.iterations;
   }
-  EmReport report = fit_vmf_mixture(fitted, mixture, guarded);
+  EmReport report = fit_vmf_mixture(fitted, mixture, p.options.em);
   report.iterations += start_iterations;
   if (!chunks.empty()) {
     const EmReport guarded_report = report;
-    EmOptions polish = plain;
-    polish.accelerate = p.options.em.accelerate;
-    report = fit_vmf_mixture(normals, mixture, polish);
+    report = fit_vmf_mixture(normals, mixture, plain);
     report.iterations += guarded_report.iterations;
     report.reseeds = guarded_report.reseeds;
   }

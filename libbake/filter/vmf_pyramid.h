@@ -15,8 +15,8 @@
 //   rest empty. Both starts run plain EM to a fixed point (one start when both rules choose the same lobes); the
 //   better one then continues with the collapse guard of vmf_mixture.h (trial re-seeds of the weakest lobe).
 //   A texel of more than max_chunks normals runs all of that on chunks of its normals (vmf_normal_chunks.h:
-//   chunked EM, exact for the vMF's linear log density, its likelihood a lower bound) without SQUAREM (cheap
-//   there, and plain EM's path is kept), then EM continues, accelerated, on every finest normal: the stored
+//   chunked EM, exact for the vMF's linear log density, its likelihood a lower bound), SQUAREM-accelerated like
+//   every fit here, then EM continues on every finest normal: the stored
 //   lobes are a fixed point of the texel's own likelihood.
 // - Statistics per level: the mean log-likelihood per finest normal of the stored lobes (decoded from the
 //   floats, after the coherence pass), and the EM's iterations, converged fraction and re-seeds per texel.
