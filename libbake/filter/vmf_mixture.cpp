@@ -222,7 +222,9 @@ FixedPoint em_to_fixed_point(std::span<const WeightedNormal> normals, std::vecto
 
 double vmf_mixture_log_likelihood(std::span<const WeightedNormal> normals, const std::vector<VmfComponent>& mixture) {
   const LobeTerms t = lobe_terms(mixture);
-  return chunked_sum(normals.size(), [&](size_t i) { return normals[i].w * log_mixture_density(t, normals[i].n); });
+  // The E-step's vector loop computes the log-likelihood with its sums (no live lobe: every density is 0).
+  if (t.count == 0) return normals.empty() ? 0.0 : -std::numeric_limits<double>::infinity();
+  return vmf_e_step(normals, t).log_likelihood;
 }
 
 void set_lobe_from_resultant(VmfComponent& lobe, double kappa_max) {
