@@ -11,9 +11,37 @@
 #pragma once
 
 #include <bit>
+#include <cstddef>
 #include <cstdint>
 
 namespace mbk {
+
+// 1 / n!, n = 13 down to 0: e^r to r^13, highest power first.
+inline constexpr double kExpTaylor[] = {1.0 / 6227020800.0,
+                                        1.0 / 479001600.0,
+                                        1.0 / 39916800.0,
+                                        1.0 / 3628800.0,
+                                        1.0 / 362880.0,
+                                        1.0 / 40320.0,
+                                        1.0 / 5040.0,
+                                        1.0 / 720.0,
+                                        1.0 / 120.0,
+                                        1.0 / 24.0,
+                                        1.0 / 6.0,
+                                        0.5,
+                                        1.0,
+                                        1.0};
+// 1 / (2n + 1), n = 10 down to 0: atanh(f) / f in powers of f^2, highest first.
+inline constexpr double kAtanhSeries[] = {1.0 / 21.0, 1.0 / 19.0, 1.0 / 17.0, 1.0 / 15.0, 1.0 / 13.0, 1.0 / 11.0,
+                                          1.0 / 9.0,  1.0 / 7.0,  1.0 / 5.0,  1.0 / 3.0,  1.0};
+
+// sum c_i x^(n-i) by Horner's rule, for a double or a vector.
+template <typename D, size_t N>
+[[gnu::always_inline]] inline D horner(D x, const double (&c)[N]) {
+  D p = D{} + c[0];
+  for (size_t i = 1; i < N; ++i) p = p * x + c[i];
+  return p;
+}
 
 template <typename D = double, typename U = uint64_t>
 [[gnu::always_inline]] inline D fast_exp(D d) {
@@ -21,20 +49,7 @@ template <typename D = double, typename U = uint64_t>
   constexpr double kLn2Hi = 0x1.62e42feep-1, kLn2Lo = 0x1.a39ef35793c76p-33;
   const D t = d * kInvLn2 + kShift, k = t - kShift;
   const D r = (d - k * kLn2Hi) - k * kLn2Lo;
-  D p = D{} + 1.0 / 6227020800.0;  // 1 / 13!
-  p = p * r + 1.0 / 479001600.0;
-  p = p * r + 1.0 / 39916800.0;
-  p = p * r + 1.0 / 3628800.0;
-  p = p * r + 1.0 / 362880.0;
-  p = p * r + 1.0 / 40320.0;
-  p = p * r + 1.0 / 5040.0;
-  p = p * r + 1.0 / 720.0;
-  p = p * r + 1.0 / 120.0;
-  p = p * r + 1.0 / 24.0;
-  p = p * r + 1.0 / 6.0;
-  p = p * r + 0.5;
-  p = p * r + 1.0;
-  p = p * r + 1.0;
+  const D p = horner(r, kExpTaylor);
   // The low bits of t hold k (two's complement); 2^k has the biased exponent k + 1023.
   const U k_bits = std::bit_cast<U>(t) - std::bit_cast<uint64_t>(kShift);
   return p * std::bit_cast<D>((k_bits + 1023u) << 52);
@@ -50,17 +65,7 @@ template <typename D = double, typename U = uint64_t>
   const auto high = mantissa > kSqrt2;
   const D m = high ? 0.5 * mantissa : mantissa, e = biased - (high ? 1022.0 : 1023.0);
   const D f = (m - 1.0) / (m + 1.0), f2 = f * f;
-  D p = D{} + 1.0 / 21.0;
-  p = p * f2 + 1.0 / 19.0;
-  p = p * f2 + 1.0 / 17.0;
-  p = p * f2 + 1.0 / 15.0;
-  p = p * f2 + 1.0 / 13.0;
-  p = p * f2 + 1.0 / 11.0;
-  p = p * f2 + 1.0 / 9.0;
-  p = p * f2 + 1.0 / 7.0;
-  p = p * f2 + 1.0 / 5.0;
-  p = p * f2 + 1.0 / 3.0;
-  p = p * f2 + 1.0;
+  const D p = horner(f2, kAtanhSeries);
   return e * kLn2Hi + (2.0 * f * p + e * kLn2Lo);
 }
 
