@@ -14,6 +14,9 @@ namespace {
 
 constexpr double kSeriesLimit = 0.1;  // below: the derivative's polynomial series
 constexpr double kDirectLimit = 2.0;  // below: A from the cancellation-free series; above: 1 - (1 - A)
+// Above: e^-2k (< 2e-35) is below an ulp of every term it is added to, so the formulas drop it, with the same bits,
+// and exp is not called into its slow underflow path (kappa_max is 1e6).
+constexpr double kNoExpLimit = 40.0;
 
 // A(k) = (k cosh k - sinh k) / (k sinh k), whose numerator sum_{n>=1} 2n k^(2n+1) / (2n+1)! has only positive
 // terms (the textbook coth(k) - 1/k loses ~log10(3 / k^2) digits to cancellation below k ~ 2). Below k = 1e-8,
@@ -36,6 +39,7 @@ double mean_length_derivative(double k) {
     const double k2 = k * k;
     return 1.0 / 3.0 + k2 * (-3.0 / 45.0 + k2 * (10.0 / 945.0 + k2 * (-7.0 / 4725.0 + k2 * (18.0 / 93555.0))));
   }
+  if (k > kNoExpLimit) return 1.0 / (k * k);
   const double e = std::exp(-2.0 * k), d = -std::expm1(-2.0 * k);
   return 1.0 / (k * k) - 4.0 * e / (d * d);
 }
@@ -51,6 +55,7 @@ double vmf_mean_length(double kappa) {
 double vmf_one_minus_mean_length(double kappa) {
   if (kappa < kDirectLimit) return 1.0 - vmf_mean_length(kappa);
   if (std::isinf(kappa)) return 0.0;
+  if (kappa > kNoExpLimit) return 1.0 / kappa;
   // coth(k) = 1 + 2 e^-2k / (1 - e^-2k), so 1 - A = 1/k - 2 e^-2k / (1 - e^-2k): no overflow, and above k = 2
   // the second term is below 8% of the first (no significant cancellation).
   return 1.0 / kappa - 2.0 * std::exp(-2.0 * kappa) / -std::expm1(-2.0 * kappa);
@@ -92,7 +97,8 @@ double vmf_log_density(double kappa, double cos_angle) {
   constexpr double kLog4Pi = 2.5310242469692907930;  // log(4 pi)
   // kappa / (1 - e^-2k) -> 1/2 as k -> 0, and expm1 keeps it exact for any positive kappa (even subnormal).
   if (kappa <= 0.0) return -kLog4Pi;
-  return std::log(kappa / (2.0 * std::numbers::pi * -std::expm1(-2.0 * kappa))) + kappa * (cos_angle - 1.0);
+  const double one_minus = kappa > kNoExpLimit ? 1.0 : -std::expm1(-2.0 * kappa);
+  return std::log(kappa / (2.0 * std::numbers::pi * one_minus)) + kappa * (cos_angle - 1.0);
 }
 
 void vmf_band_factors(double kappa, std::span<double> out) {

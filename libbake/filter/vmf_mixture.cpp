@@ -9,107 +9,19 @@
 #include "formats/error.h"
 #include "libbake/core/parallel.h"
 #include "libbake/core/vmf_lobe.h"
+#include "libbake/filter/vmf_e_step.h"
 
 namespace mbk {
 namespace {
 
 constexpr size_t kChunk = kVmfSumChunk;
-// Terms of a log-sum-exp more than 40 nats below the largest are taken as 0 rather than passed to exp: e^-40 ~
-// 4e-18 is below half an ulp of the sum (>= 1), so the normaliser is unchanged, and a responsibility that small
-// moves the M-step sums by less than 1e-17 relative. At high kappa most lobes are that far from most normals.
+// The guard's log_add drops a term this far below the other, as the E-step does (vmf_e_step.h).
 constexpr double kNegligibleLog = -40.0;
 
-// Per-lobe sums of one E-step over a chunk of normals, plus the chunk's log-likelihood.
-struct Partial {
-  std::vector<double> mass;  // sum w z
-  std::vector<Vec3> moment;  // sum w z n
-  double log_likelihood = 0.0;
-};
-
-// The live lobes of a mixture as the E-step uses them: log alpha_j + log g_j(n) = log_scale_j + kappa_mu_j . n.
-struct LobeTerms {
-  std::vector<size_t> live;       // mixture index of each live lobe
-  std::vector<double> log_scale;  // log(alpha C(kappa)) - kappa
-  std::vector<Vec3> kappa_mu;     // kappa mu
-};
-
-LobeTerms lobe_terms(const std::vector<VmfComponent>& mixture) {
-  if (mixture.size() > size_t(kVmfMaxLobes))
-    throw Error(ExitCode::runtime_failure, "internal: vMF mixture of " + std::to_string(mixture.size()) + " lobes");
-  LobeTerms t;
-  for (size_t j = 0; j < mixture.size(); ++j) {
-    const VmfComponent& c = mixture[j];
-    if (!(c.alpha > 0.0)) continue;
-    t.live.push_back(j);
-    t.log_scale.push_back(std::log(c.alpha) + vmf_log_density(c.kappa, 1.0) - c.kappa);
-    t.kappa_mu.push_back(c.kappa * c.mu);
-  }
-  return t;
-}
-
-// Responsibilities of the live lobes for normal n into z (size live.size()); returns log sum_j alpha_j g_j(n).
-// A term more than -kNegligibleLog below the largest gets z = 0 without a call to exp.
-double responsibilities(const LobeTerms& t, const Vec3& n, double* z) {
-  const size_t L = t.live.size();
-  double top = -std::numeric_limits<double>::infinity();
-  for (size_t l = 0; l < L; ++l) {
-    z[l] = t.log_scale[l] + t.kappa_mu[l].dot(n);
-    top = std::max(top, z[l]);
-  }
-  double sum = 0.0;
-  for (size_t l = 0; l < L; ++l) {
-    const double d = z[l] - top;
-    z[l] = d < kNegligibleLog ? 0.0 : d == 0.0 ? 1.0 : std::exp(d);  // in [0, 1]; 1 for the largest
-    sum += z[l];
-  }
-  const double inverse = 1.0 / sum;
-  for (size_t l = 0; l < L; ++l) z[l] *= inverse;
-  return top + std::log(sum);
-}
-
-// log sum_j alpha_j g_j(n), the same log-sum-exp as responsibilities() without keeping the terms.
+// log sum_j alpha_j g_j(n), the E-step's log-sum-exp without keeping the responsibilities.
 double log_mixture_density(const LobeTerms& t, const Vec3& n) {
   double z[kVmfMaxLobes];
-  if (t.live.empty()) return -std::numeric_limits<double>::infinity();
-  return responsibilities(t, n, z);
-}
-
-// One E-step with sufficient statistics, chunked for determinism.
-Partial e_step(std::span<const WeightedNormal> normals, const LobeTerms& t, size_t J) {
-  const size_t L = t.live.size(), chunks = (normals.size() + kChunk - 1) / kChunk;
-  std::vector<Partial> partials(chunks);
-  auto run = [&](int64_t c) {
-    Partial& p = partials[size_t(c)];
-    p.mass.assign(L, 0.0);
-    p.moment.assign(L, Vec3::Zero());
-    double z[kVmfMaxLobes];
-    const size_t end = std::min(normals.size(), size_t(c + 1) * kChunk);
-    for (size_t i = size_t(c) * kChunk; i < end; ++i) {
-      const WeightedNormal& wn = normals[i];
-      p.log_likelihood += wn.w * responsibilities(t, wn.n, z);
-      for (size_t l = 0; l < L; ++l) {
-        if (z[l] == 0.0) continue;
-        const double wz = wn.w * z[l];
-        p.mass[l] += wz;
-        p.moment[l] += wz * wn.n;
-      }
-    }
-  };
-  if (chunks > 1)
-    parallel_for(0, int64_t(chunks), run);
-  else
-    run(0);
-  Partial total;
-  total.mass.assign(J, 0.0);
-  total.moment.assign(J, Vec3::Zero());
-  for (size_t c = 0; c < chunks; ++c) {
-    total.log_likelihood += partials[c].log_likelihood;
-    for (size_t l = 0; l < L; ++l) {
-      total.mass[t.live[l]] += partials[c].mass[l];
-      total.moment[t.live[l]] += partials[c].moment[l];
-    }
-  }
-  return total;
+  return vmf_responsibilities(t, n, z);
 }
 
 // Sum over normals of term(i), in fixed chunks added in chunk order (deterministic whatever the threads).
@@ -190,7 +102,7 @@ void reseed(std::span<const WeightedNormal> normals, std::vector<VmfComponent>& 
 }
 
 // The M-step from the sums of an E-step (vmf_mixture.h); a lobe whose mass is below kEmptyAmplitude is emptied.
-void m_step(const Partial& p, std::vector<VmfComponent>& mixture, const EmOptions& options,
+void m_step(const EStepSums& p, std::vector<VmfComponent>& mixture, const EmOptions& options,
             std::span<const Vec3> align_targets) {
   for (size_t j = 0; j < mixture.size(); ++j) {
     VmfComponent& c = mixture[j];
@@ -200,7 +112,7 @@ void m_step(const Partial& p, std::vector<VmfComponent>& mixture, const EmOption
       continue;
     }
     c.alpha = p.mass[j];
-    c.r = p.moment[j] / p.mass[j];
+    c.r = Vec3(p.moment[j][0], p.moment[j][1], p.moment[j][2]) / p.mass[j];
     set_lobe_from_resultant(c, options.kappa_max);
     if (options.align > 0.0 && !align_targets.empty()) {
       const Vec3 pulled = c.r + options.align * align_targets[j];  // [Han07] Eq. (7.26)
@@ -271,13 +183,12 @@ struct FixedPoint {
 // then the extrapolated state, kept (and stepped from) only if its log-likelihood is not below the last plain one.
 FixedPoint em_to_fixed_point(std::span<const WeightedNormal> normals, std::vector<VmfComponent>& mixture,
                              const EmOptions& options, std::span<const Vec3> align_targets, int budget) {
-  const size_t J = mixture.size();
   const bool accelerate = options.accelerate && !(options.align > 0.0 && !align_targets.empty());
   FixedPoint point;
   double previous = -std::numeric_limits<double>::infinity();
   // A plain EM step; true at a fixed point (or with the budget spent).
   const auto plain_step = [&]() {
-    const Partial p = e_step(normals, lobe_terms(mixture), J);
+    const EStepSums p = vmf_e_step(normals, lobe_terms(mixture));
     ++point.iterations;
     point.log_likelihood = p.log_likelihood;
     m_step(p, mixture, options, align_targets);
@@ -295,7 +206,7 @@ FixedPoint em_to_fixed_point(std::span<const WeightedNormal> normals, std::vecto
     if (plain_step()) return point;
     std::vector<VmfComponent> jump = squarem_extrapolation(t0, t1, mixture, options.kappa_max);
     if (jump.empty()) continue;
-    const Partial p = e_step(normals, lobe_terms(jump), J);
+    const EStepSums p = vmf_e_step(normals, lobe_terms(jump));
     ++point.iterations;
     if (p.log_likelihood >= previous) {
       m_step(p, jump, options, align_targets);
@@ -311,7 +222,9 @@ FixedPoint em_to_fixed_point(std::span<const WeightedNormal> normals, std::vecto
 
 double vmf_mixture_log_likelihood(std::span<const WeightedNormal> normals, const std::vector<VmfComponent>& mixture) {
   const LobeTerms t = lobe_terms(mixture);
-  return chunked_sum(normals.size(), [&](size_t i) { return normals[i].w * log_mixture_density(t, normals[i].n); });
+  // The E-step's vector loop computes the log-likelihood with its sums (no live lobe: every density is 0).
+  if (t.count == 0) return normals.empty() ? 0.0 : -std::numeric_limits<double>::infinity();
+  return vmf_e_step(normals, t).log_likelihood;
 }
 
 void set_lobe_from_resultant(VmfComponent& lobe, double kappa_max) {
@@ -404,8 +317,8 @@ std::vector<double> lobe_features(std::span<const WeightedNormal> normals, std::
   std::vector<double> sum(J * F, 0.0), mass(J, 0.0);
   double z[kVmfMaxLobes];
   for (size_t i = 0; i < normals.size(); ++i) {
-    responsibilities(t, normals[i].n, z);
-    for (size_t l = 0; l < t.live.size(); ++l) {
+    vmf_responsibilities(t, normals[i].n, z);
+    for (size_t l = 0; l < t.count; ++l) {
       const size_t j = t.live[l];
       const double wz = normals[i].w * z[l];
       mass[j] += wz;

@@ -13,7 +13,7 @@
 //           mu_j = normalize(r_j + C sum_k alpha_jk mu_jk) (Eq. 7.26; C = 0 gives Alg. 7.1 line 13).
 // Stopping: when the weighted mean log-likelihood sum_i w_i log g(n_i) rises by less than `tolerance` in a plain
 // EM step (or after max_iterations E-steps). EM never lowers it for C = 0; with C > 0 a fall also stops it.
-// The E-step skips exp for terms more than 40 nats below the largest (0 to double precision).
+// The E-step and its log-sum-exp are in vmf_e_step.h.
 // Acceleration (deviation [Han07]; C = 0 only): SQUAREM (Varadhan and Roland 2008, scheme S3). From theta_0, two
 // plain steps give theta_1 = M(theta_0), theta_2 = M(theta_1) in the parameters (alpha_j, r_j); the jump
 // theta_0 - 2 s d + s^2 v (d = theta_1 - theta_0, v = theta_2 - 2 theta_1 + theta_0, s = -|d| / |v|, moved

@@ -209,6 +209,9 @@ VmfComponent decode_lobe(const float* stored, double kappa_max) {
 
 namespace {
 
+// Side of the square tiles of the coherence pass (align_level).
+constexpr uint32_t kAlignTile = 32;
+
 // What every level's fit reads: the map, the optional per-texel features, the options.
 struct PyramidFit {
   const NormalMap& map;
@@ -254,10 +257,10 @@ EmReport fit_texel(const PyramidFit& p, const VmfLevel& finer, const std::vector
   std::vector<VmfComponent> mixture = farthest_apart_seeds(candidates, J, SeedRule::farthest);
   std::vector<VmfComponent> weighted = farthest_apart_seeds(candidates, J, SeedRule::mass_weighted);
   const std::vector<VmfComponent> mixture_before_fit = mixture;
-  // On chunks EM is cheap, and plain EM's path is kept (SQUAREM's jumps can pass an atom's basin by).
-  EmOptions plain = p.options.em, guarded = p.options.em;
+  // SQUAREM on chunks too: lobes at the kappa cap (atoms) are held, not extrapolated (vmf_mixture.h), and it
+  // halves the chunked E-steps with a fit no worse on the generated kinds and the real maps (docs/BENCHMARKS.md).
+  EmOptions plain = p.options.em;
   plain.reseed = false;
-  if (!chunks.empty()) plain.accelerate = guarded.accelerate = false;
   const EmReport first = fit_vmf_mixture(fitted, mixture, plain);
   int start_iterations = first.iterations;
   if (!same_lobes(mixture_before_fit, weighted)) {  // the same seeds (in another order) would give the same fit
@@ -265,13 +268,11 @@ EmReport fit_texel(const PyramidFit& p, const VmfLevel& finer, const std::vector
     if (second.log_likelihood > first.log_likelihood) mixture = std::move(weighted);
     start_iterations += second.iterations;
   }
-  EmReport report = fit_vmf_mixture(fitted, mixture, guarded);
+  EmReport report = fit_vmf_mixture(fitted, mixture, p.options.em);
   report.iterations += start_iterations;
   if (!chunks.empty()) {
     const EmReport guarded_report = report;
-    EmOptions polish = plain;
-    polish.accelerate = p.options.em.accelerate;
-    report = fit_vmf_mixture(normals, mixture, polish);
+    report = fit_vmf_mixture(normals, mixture, plain);
     report.iterations += guarded_report.iterations;
     report.reseeds = guarded_report.reseeds;
   }
@@ -308,45 +309,48 @@ void align_level(const PyramidFit& p, VmfPyramid& pyramid, size_t k) {
   const LevelGeometry g = geometry(p.map, w, h);
   std::vector<EmReport> reports;
   if (refit) reports.resize(size_t(w) * h);
-  for (uint32_t d = 0; d + 1 < w + h; ++d) {
-    const uint32_t first = d >= h ? d - h + 1 : 0, last = std::min(d, w - 1);
-    const auto texel_body = [&](int64_t offset) {
-      const uint32_t i = first + uint32_t(offset), j = d - i;
-      const std::vector<VmfComponent> mixture = decode_texel(level, i, j, J, p.kappa_max);
-      std::vector<Vec3> t(size_t(J), Vec3::Zero());
-      if (!top) {
-        const VmfLevel& parent = pyramid.levels[k + 1];
-        add_targets(parent, uint32_t((i + 0.5) * parent.width / w), uint32_t((j + 0.5) * parent.height / h), J, t,
-                    p.kappa_max);
-        if (i > 0) add_targets(level, i - 1, j, J, t, p.kappa_max);
-        if (j > 0) add_targets(level, i, j - 1, J, t, p.kappa_max);
-        if (i > 0 && j > 0) add_targets(level, i - 1, j - 1, J, t, p.kappa_max);
-      }
-      const std::vector<int> source = top ? by_amplitude(mixture) : assign_slots(mixture, t);
-      const size_t texel = size_t(j) * w + i;
-      if (!refit) {
-        move_slots(&level.lobes[texel * J * 4], source, 4);
-        if (F) move_slots(&level.features[texel * J * F], source, F);
-        return;
-      }
-      std::vector<VmfComponent> permuted(static_cast<size_t>(J));
-      for (int s = 0; s < J; ++s)
-        if (source[size_t(s)] >= 0) permuted[size_t(s)] = mixture[size_t(source[size_t(s)])];
-      std::vector<WeightedNormal> normals;
-      std::vector<float> y;
-      gather(p.map, p.features, g, i, j, normals, y);
-      reports[texel] = fit_vmf_mixture(normals, permuted, p.options.em, t);
-      store_mixture(permuted, &level.lobes[texel * J * 4]);
-      if (F) store_features(permuted, lobe_features(normals, y, F, permuted), F, &level.features[texel * J * F]);
-    };
-    // Ordering alone is a few hundred operations per texel: run it serially (one parallel region per
-    // diagonal would cost more in barriers than it saves); refits are EM runs and go in parallel.
-    const int64_t count = int64_t(last) + 1 - first;
-    if (refit) {
-      for_each_texel(count, normals_per_texel(p.map, w, h), texel_body);
-    } else {
-      for (int64_t offset = 0; offset < count; ++offset) texel_body(offset);
+  const auto texel_body = [&](uint32_t i, uint32_t j) {
+    const std::vector<VmfComponent> mixture = decode_texel(level, i, j, J, p.kappa_max);
+    std::vector<Vec3> t(size_t(J), Vec3::Zero());
+    if (!top) {
+      const VmfLevel& parent = pyramid.levels[k + 1];
+      add_targets(parent, uint32_t((i + 0.5) * parent.width / w), uint32_t((j + 0.5) * parent.height / h), J, t,
+                  p.kappa_max);
+      if (i > 0) add_targets(level, i - 1, j, J, t, p.kappa_max);
+      if (j > 0) add_targets(level, i, j - 1, J, t, p.kappa_max);
+      if (i > 0 && j > 0) add_targets(level, i - 1, j - 1, J, t, p.kappa_max);
     }
+    const std::vector<int> source = top ? by_amplitude(mixture) : assign_slots(mixture, t);
+    const size_t texel = size_t(j) * w + i;
+    if (!refit) {
+      move_slots(&level.lobes[texel * J * 4], source, 4);
+      if (F) move_slots(&level.features[texel * J * F], source, F);
+      return;
+    }
+    std::vector<VmfComponent> permuted(static_cast<size_t>(J));
+    for (int s = 0; s < J; ++s)
+      if (source[size_t(s)] >= 0) permuted[size_t(s)] = mixture[size_t(source[size_t(s)])];
+    std::vector<WeightedNormal> normals;
+    std::vector<float> y;
+    gather(p.map, p.features, g, i, j, normals, y);
+    reports[texel] = fit_vmf_mixture(normals, permuted, p.options.em, t);
+    store_mixture(permuted, &level.lobes[texel * J * 4]);
+    if (F) store_features(permuted, lobe_features(normals, y, F, permuted), F, &level.features[texel * J * F]);
+  };
+  // Square tiles of texels by anti-diagonals of tiles, each tile in scanline order: the left, up and up-left
+  // neighbours a texel reads are final, either earlier in its tile or in a tile of an earlier diagonal, so the
+  // result is that of one texel at a time by anti-diagonals. Ordering alone is a few hundred operations per texel:
+  // tiles of kAlignTile^2 texels keep the barriers few; refits are EM runs, one texel per tile.
+  const uint32_t tile = refit ? 1 : kAlignTile, tw = (w + tile - 1) / tile, th = (h + tile - 1) / tile;
+  for (uint32_t d = 0; d + 1 < tw + th; ++d) {
+    const uint32_t first = d >= th ? d - th + 1 : 0, last = std::min(d, tw - 1);
+    const auto tile_body = [&](int64_t offset) {
+      const uint32_t ti = first + uint32_t(offset), tj = d - ti;
+      for (uint32_t j = tj * tile; j < std::min(h, (tj + 1) * tile); ++j)
+        for (uint32_t i = ti * tile; i < std::min(w, (ti + 1) * tile); ++i) texel_body(i, j);
+    };
+    for_each_texel(int64_t(last) + 1 - first, refit ? normals_per_texel(p.map, w, h) : uint64_t(tile) * tile,
+                   tile_body);
   }
   if (refit) level.statistics = summarise(reports, level, J);
   level.statistics.mean_log_likelihood = stored_log_likelihood(p.map, level, J, p.kappa_max);

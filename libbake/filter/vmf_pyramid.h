@@ -15,8 +15,8 @@
 //   rest empty. Both starts run plain EM to a fixed point (one start when both rules choose the same lobes); the
 //   better one then continues with the collapse guard of vmf_mixture.h (trial re-seeds of the weakest lobe).
 //   A texel of more than max_chunks normals runs all of that on chunks of its normals (vmf_normal_chunks.h:
-//   chunked EM, exact for the vMF's linear log density, its likelihood a lower bound) without SQUAREM (cheap
-//   there, and plain EM's path is kept), then EM continues, accelerated, on every finest normal: the stored
+//   chunked EM, exact for the vMF's linear log density, its likelihood a lower bound), SQUAREM-accelerated like
+//   every fit here, then EM continues on every finest normal: the stored
 //   lobes are a fixed point of the texel's own likelihood.
 // - Statistics per level: the mean log-likelihood per finest normal of the stored lobes (decoded from the
 //   floats, after the coherence pass), and the EM's iterations, converged fraction and re-seeds per texel.
@@ -26,7 +26,8 @@
 //   texel's lobes are first permuted to the slots that best match t (greedy on alpha_a mu_a . t_b); when
 //   C > 0 (--align) the texel is then refitted with Eq. (7.26), mu_j = normalize(r_j + C t_j). The top level
 //   orders its lobes by decreasing amplitude. Deviation [Han07]: the paper builds aligned lobes top-down in
-//   scanline order; wavefronts use the same neighbours except up-right and let a level run in parallel.
+//   scanline order; wavefronts use the same neighbours except up-right and let a level run in parallel
+//   (by tiles of 32 x 32 texels along anti-diagonals of tiles, scanline order in a tile: the same result).
 // - Storage per lobe: (alpha, alpha r), so that trilinear interpolation of the four floats is meaningful
 //   (Sec. 7.6.4.2): r~ = T(alpha r) / T(alpha), kappa~ = A^-1(|r~|) (capped), mu~ = r~ / |r~|. With C > 0 the
 //   stored r is |r| mu_aligned (the aligned direction with the fitted concentration).

@@ -42,7 +42,8 @@ double reference_kappa(double r) {
 }
 
 TEST(VmfLobe, MeanLengthMatchesLongDouble) {
-  for (double k : {1e-8, 1e-3, 0.05, 0.0999, 0.1, 0.1001, 0.5, 1.0, 1.999, 2.0, 3.0, 20.0, 100.0, 1e4, 1e9}) {
+  for (double k : {1e-8, 1e-3, 0.05, 0.0999, 0.1, 0.1001, 0.5, 1.0, 1.999, 2.0, 3.0, 20.0, 39.999, 40.0, 40.001, 100.0,
+                   1e4, 1e6, 1e9}) {
     EXPECT_NEAR(vmf_mean_length(k), double(a_ld(k)), 1e-15 * double(a_ld(k)) + 1e-300) << k;
     if (k >= 0.1) {
       EXPECT_NEAR(vmf_one_minus_mean_length(k), double(one_minus_a_ld(k)), 1e-15 * double(one_minus_a_ld(k))) << k;
@@ -50,6 +51,14 @@ TEST(VmfLobe, MeanLengthMatchesLongDouble) {
   }
   EXPECT_EQ(vmf_mean_length(0.0), 0.0);
   EXPECT_EQ(vmf_one_minus_mean_length(std::numeric_limits<double>::infinity()), 0.0);
+}
+
+// Above kappa = 40 the functions drop e^-2k instead of computing it: the bits are those of the full formula.
+TEST(VmfLobe, LargeKappaDropsTheExponentialWithTheSameBits) {
+  for (double k : {40.0000001, 41.0, 1e3, 1e6, 1e9}) {
+    EXPECT_EQ(vmf_one_minus_mean_length(k), 1.0 / k - 2.0 * std::exp(-2.0 * k) / -std::expm1(-2.0 * k)) << k;
+    EXPECT_EQ(vmf_log_density(k, 0.5), std::log(k / (2.0 * std::numbers::pi * -std::expm1(-2.0 * k))) + k * -0.5) << k;
+  }
 }
 
 TEST(VmfLobe, KappaSolveMatchesHighPrecisionReference) {
