@@ -228,10 +228,11 @@ TEST(GlintsEffect, CurvedSurfaceHighlightMatchesItsReference) {
 // reference's own noise floor (another jitter seed). Skips without the maps (../shared/data/real).
 TEST(GlintsEffect, RealMapSceneMatchesItsReference) {
   const std::filesystem::path real = MICROBAKE_REAL_DATA_DIR;
-  json scene_json = json::parse(std::ifstream(std::filesystem::path(MICROBAKE_SOURCE_DIR) / "examples" / "scenes" /
-                                              "glints_real.json"));
+  json scene_json = json::parse(
+      std::ifstream(std::filesystem::path(MICROBAKE_SOURCE_DIR) / "examples" / "scenes" / "glints_real.json"));
   for (auto& [name, material] : scene_json["materials"].items()) {
-    const std::filesystem::path map = real / std::filesystem::path(material["normal_map"]["path"].get<std::string>()).filename();
+    const std::filesystem::path map =
+        real / std::filesystem::path(material["normal_map"]["path"].get<std::string>()).filename();
     if (!std::filesystem::exists(map)) GTEST_SKIP() << map << " is absent";
     material["normal_map"]["path"] = map.string();
   }
