@@ -12,6 +12,7 @@
 #include "formats/atomic_file.h"
 #include "formats/error.h"
 #include "formats/file_extension.h"
+#include "libbake/image/image_io.h"
 #include "libbake/scene/technique_parameters.h"
 
 namespace mbk::cli {
@@ -53,6 +54,7 @@ int BakingCommand::run() {
   StageTimer timer;
   load();
   const double load_seconds = timer.lap();
+  if (lower_extension(output_.path) != ".mbk") start_loading_image_io();  // overlapping the bake
   bake(progress);
   const double bake_seconds = timer.lap();
   write(output_);

@@ -47,13 +47,8 @@ class SynthCommand : public BakingCommand {
   void write(const OutputOption& output) const override {
     output.write_with([&](const std::filesystem::path& temporary) {
       if (!graph_.layout.normal_map) return save_image(temporary, window_image_, {}, output.path);
-      NormalMap map;  // encoded as every baker reads normal maps back (16-bit PNG (n + 1) / 2, float EXR n)
-      map.width = window_image_.width;
-      map.height = window_image_.height;
-      map.texels.reserve(window_image_.pixels.size() / 3);
-      for (size_t i = 0; i < window_image_.pixels.size(); i += 3)
-        map.texels.push_back(Vec3f(window_image_.pixels[i], window_image_.pixels[i + 1], window_image_.pixels[i + 2]));
-      save_normal_map(temporary, map, YConvention::plus_y, output.path);
+      // Encoded as every baker reads normal maps back (16-bit PNG (n + 1) / 2, float EXR n).
+      save_normal_image(temporary, window_image_, YConvention::plus_y, output.path);
     });
   }
 

@@ -14,6 +14,7 @@
 #include <mutex>
 
 #include "formats/atomic_file.h"
+#include "libbake/core/huge_pages.h"
 #include "formats/error.h"
 #include "formats/file_extension.h"
 
@@ -195,7 +196,8 @@ void save(const std::filesystem::path& path, const Image& image, const ImageSave
   OIIO::TypeDesc stored = exr ? (options.float_bits == 16 ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT)
                               : (options.png_bits == 16 ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
   OIIO::ImageSpec spec(int(image.width), int(image.height), int(image.channels), stored);
-  if (exr) spec.attribute("compression", "zip");  // stated, so files do not change with OIIO's default
+  // Stated, so files do not change with OIIO's default.
+  if (exr) spec.attribute("compression", options.exr_zip ? "zip" : "none");
   // Channels are stored as given: without this, OpenImageIO divides colour by alpha when writing PNG, TGA
   // and TIFF (test: NormalMapDecode.AlphaDoesNotScaleNormals).
   spec.attribute("oiio:UnassociatedAlpha", 1);
@@ -205,7 +207,12 @@ void save(const std::filesystem::path& path, const Image& image, const ImageSave
   // The codec writes into memory when it can, and the bytes reach the file through write_file_bytes, which checks
   // every write: codecs writing to a FILE* of their own do not all notice a full disk (libpng's did not, and a
   // truncated PNG replaced the old output). Codecs without memory output write the file and are read back whole.
-  OIIO::Filesystem::IOVecOutput encoded;
+  // The buffer is sized up front for the unencoded pixels plus headers and tables (a bound for EXR; PNG's output is
+  // smaller), so it is filled once instead of being regrown and copied; untouched pages cost nothing.
+  std::vector<unsigned char> bytes;
+  bytes.reserve(image.pixels.size() * stored.size() + image.height * sizeof(uint64_t) + (size_t(1) << 16));
+  advise_huge_pages(bytes.data(), bytes.capacity());
+  OIIO::Filesystem::IOVecOutput encoded(bytes);
   const bool in_memory = out->supports("ioproxy");
   if (in_memory) out->set_ioproxy(&encoded);
   if (!out->open(path.string(), spec))

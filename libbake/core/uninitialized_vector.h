@@ -1,11 +1,13 @@
 // std::vector whose sizing constructor and resize() leave trivially constructible elements unwritten, for a
 // large buffer that a (parallel) loop then fills entirely: no zero-fill pass on one thread before it, and each
-// page is first touched by the thread that writes it.
+// page is first touched by the thread that writes it. Large buffers are advised onto huge pages (huge_pages.h).
 #pragma once
 
 #include <memory>
 #include <utility>
 #include <vector>
+
+#include "libbake/core/huge_pages.h"
 
 namespace mbk {
 
@@ -18,6 +20,12 @@ struct UninitializedAllocator : std::allocator<T> {
   UninitializedAllocator() = default;
   template <typename U>
   UninitializedAllocator(const UninitializedAllocator<U>&) noexcept {}
+
+  T* allocate(size_t n) {
+    T* data = std::allocator<T>::allocate(n);
+    advise_huge_pages(data, n * sizeof(T));
+    return data;
+  }
 
   // Value-initialisation (vector(n), resize(n)) becomes default-initialisation; other constructions as usual.
   template <typename U>

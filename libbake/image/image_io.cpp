@@ -7,6 +7,7 @@
 #include <dlfcn.h>
 
 #include <system_error>
+#include <thread>
 
 #include "formats/error.h"
 #include "libbake/image/image_io_module.h"
@@ -27,7 +28,26 @@ const ImageIoModule& image_io_module(const std::filesystem::path& image) {
   return *module;
 }
 
+// The thread of start_loading_image_io, joined at exit (a process never ends inside dlopen).
+struct BackgroundLoad {
+  std::thread thread;
+  ~BackgroundLoad() {
+    if (thread.joinable()) thread.join();
+  }
+};
+
 }  // namespace
+
+void start_loading_image_io() {
+  static BackgroundLoad load;
+  if (load.thread.joinable()) return;
+  load.thread = std::thread([] {
+    try {
+      (void)image_io_module({});
+    } catch (const Error&) {  // the next image call tries again and reports it, naming its file
+    }
+  });
+}
 
 const ImageIoModule& load_image_io_module(const std::vector<std::filesystem::path>& folders,
                                           const std::filesystem::path& image) {

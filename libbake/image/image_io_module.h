@@ -14,7 +14,7 @@
 namespace mbk {
 
 // Changes when the table or the types it passes change, so that a module of another build is refused.
-inline constexpr uint32_t kImageIoModuleAbi = 1;
+inline constexpr uint32_t kImageIoModuleAbi = 2;
 inline constexpr const char* kImageIoModuleFile = "libmicrobake_image_io.so";
 inline constexpr const char* kImageIoModuleEntry = "microbake_image_io_module";
 

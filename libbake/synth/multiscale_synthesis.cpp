@@ -8,6 +8,7 @@
 #include "formats/error.h"
 #include "libbake/core/hash.h"
 #include "libbake/core/parallel.h"
+#include "libbake/core/uninitialized_vector.h"
 #include "libbake/synth/loop_transitions.h"
 
 namespace mbk {
@@ -23,12 +24,14 @@ constexpr uint32_t kMaxCandidates = 16;  // K at most (formats/graph_layout.h)
 typedef float LaneFloats __attribute__((vector_size(kLanes * sizeof(float))));
 typedef double LaneDoubles __attribute__((vector_size(kLanes * sizeof(double))));
 
+// Trivially constructible, so a level's buffer is not zero-filled before the parallel loop that writes every pixel.
 struct Pixel {
-  uint32_t e = 0, k = 0, x = 0, y = 0;  // texel pointer
-  float R[4] = {0, 0, 0, 0};            // cumulative transfer offset
-  float loop[4] = {0, 0, 0, 0};         // the share of R that loop transitions added (fades: loop_transitions.h)
-  bool magnified = false;               // its parent was stuck at the finest level (see stuck())
+  uint32_t e, k, x, y;  // texel pointer
+  float R[4];           // cumulative transfer offset
+  float loop[4];        // the share of R that loop transitions added (fades: loop_transitions.h)
+  bool magnified;       // its parent was stuck at the finest level (see stuck())
 };
+using Pixels = UninitializedVector<Pixel>;
 
 struct Region {
   int64_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
@@ -140,8 +143,8 @@ class Synthesizer {
     }
     corrected_.resize(largest_parity);
     colour_.reserve(largest * g_.layout.channels);
-    std::vector<Pixel> level(size_t(region[0].width() * region[0].height()));
-    for (Pixel& p : level) p.e = g_.layout.root;  // texel (0, 0) of the root's level 0
+    // Every pixel at texel (0, 0) of the root's level 0, without offsets.
+    Pixels level(size_t(region[0].width() * region[0].height()), Pixel{g_.layout.root, 0, 0, 0, {}, {}, false});
     for (uint32_t t = 0; t <= o_.level; ++t) {
       if (t > 0) level = upsample(level, region[t - 1], region[t]);
       jitter(level, region[t], t);
@@ -155,7 +158,7 @@ class Synthesizer {
     const uint32_t C = g_.layout.channels;
     Image out{o_.width, o_.height, C, std::vector<float>(size_t(o_.width) * o_.height * C)};
     const Region& r = region[o_.level];
-    for (uint32_t y = 0; y < o_.height; ++y)
+    parallel_for(0, int64_t(o_.height), [&](int64_t y) {
       for (uint32_t x = 0; x < o_.width; ++x) {
         const Pixel& p = level[size_t(y + pad) * r.width() + (x + pad)];
         for (uint32_t c = 0; c < C; ++c) out.at(x, y, c) = value(p.e, p.k, p.x, p.y, c) + p.R[c];
@@ -165,6 +168,7 @@ class Synthesizer {
           for (int c = 0; c < 3; ++c) n[c] = len > 0.0 ? float(n[c] / len) : (c == 2 ? 1.0f : 0.0f);
         }
       }
+    });
     return out;
   }
 
@@ -173,15 +177,15 @@ class Synthesizer {
   float value(uint32_t e, uint32_t k, uint32_t x, uint32_t y, uint32_t c) const {
     return g_.stacks[g_.texel(e, k, x, y) * g_.layout.channels + c];
   }
-  static const Pixel& at(const std::vector<Pixel>& s, const Region& r, int64_t x, int64_t y) {
+  static const Pixel& at(const Pixels& s, const Region& r, int64_t x, int64_t y) {
     x = std::clamp(x, r.x0, r.x1 - 1);
     y = std::clamp(y, r.y0, r.y1 - 1);
     return s[size_t((y - r.y0) * r.width() + (x - r.x0))];
   }
 
-  std::vector<Pixel> upsample(const std::vector<Pixel>& parents, const Region& pr, const Region& cr) const {
+  Pixels upsample(const Pixels& parents, const Region& pr, const Region& cr) const {
     const uint32_t m = g_.layout.side, C = g_.layout.channels;
-    std::vector<Pixel> children(size_t(cr.width() * cr.height()));
+    Pixels children(size_t(cr.width() * cr.height()));
     parallel_for(cr.y0, cr.y1, [&](int64_t y) {
       for (int64_t x = cr.x0; x < cr.x1; ++x) {
         const Pixel& parent = at(parents, pr, floor_div2(x), floor_div2(y));
@@ -209,12 +213,13 @@ class Synthesizer {
           c.R[ch] = float(R - (1.0 - kLoopOffsetKept) * loop);
           c.loop[ch] = float(kLoopOffsetKept * loop);
         }
+        for (uint32_t ch = C; ch < 4; ++ch) c.R[ch] = c.loop[ch] = 0.0f;  // unused channels: defined bytes
       }
     });
     return children;
   }
 
-  void jitter(std::vector<Pixel>& s, const Region& r, uint32_t t) const {
+  void jitter(Pixels& s, const Region& r, uint32_t t) const {
     const double rt = o_.jitter[std::min<size_t>(t, o_.jitter.size() - 1)];
     if (rt == 0.0) return;
     const uint32_t m = g_.layout.side;
@@ -234,7 +239,7 @@ class Synthesizer {
   }
 
   // The synthesized colour E(S[p]) + R_p of every pixel of the level (what neighbourhoods read), kept by correct().
-  void fill_colours(const std::vector<Pixel>& s, const Region& r) {
+  void fill_colours(const Pixels& s, const Region& r) {
     const uint32_t C = g_.layout.channels;
     colour_.resize(s.size() * C);
     parallel_for(0, r.height(), [&](int64_t y) {
@@ -248,7 +253,7 @@ class Synthesizer {
   }
 
   // The synthesized 5 x 5 neighbourhood of p in p's own colour space: E(S[p + Delta]) + R_{p + Delta} - R_p.
-  void neighbourhood(const std::vector<Pixel>& s, const Region& r, int64_t x, int64_t y, double* out) const {
+  void neighbourhood(const Pixels& s, const Region& r, int64_t x, int64_t y, double* out) const {
     const uint32_t C = g_.layout.channels;
     const Pixel& self = at(s, r, x, y);
     int64_t column[2 * kReach + 1];  // clamped to the region, as at()
@@ -419,7 +424,7 @@ class Synthesizer {
 
   // The pixel at (x, y) after correction: the best of the competing candidates, its offsets added (the pixel itself
   // when none competes).
-  Pixel corrected_pixel(const std::vector<Pixel>& s, const Region& r, int64_t x, int64_t y, bool output_level) const {
+  Pixel corrected_pixel(const Pixels& s, const Region& r, int64_t x, int64_t y, bool output_level) const {
     const uint32_t C = g_.layout.channels, K = g_.layout.candidates;
     const Pixel* around[9];  // the 3 x 3 neighbours, row by row (around[4] is the pixel)
     for (int dy = -1; dy <= 1; ++dy)
@@ -448,11 +453,11 @@ class Synthesizer {
   }
 
   // One sub-pass: the pixels of one parity read the level as it was before it and are written after it.
-  void correct(std::vector<Pixel>& s, const Region& r, int parity, bool output_level) {
+  void correct(Pixels& s, const Region& r, int parity, bool output_level) {
     // The corrected pixels of this parity, two to a row and column apart: row (y - y0) / 2, column (x - x0) / 2; one
     // buffer for every sub-pass and level, sized for the largest level by run().
     const int64_t stride = r.width() / 2 + 1;
-    std::vector<Pixel>& corrected = corrected_;
+    Pixels& corrected = corrected_;
     parallel_for(r.y0, r.y1, [&](int64_t y) {
       if (((y & 1) << 1 | 0) != (parity & 2)) return;
       for (int64_t x = r.x0; x < r.x1; ++x)
@@ -470,7 +475,7 @@ class Synthesizer {
     });
   }
 
-  double mean_error(const std::vector<Pixel>& s, const Region& r) const {
+  double mean_error(const Pixels& s, const Region& r) const {
     std::vector<double> rows(size_t(r.height()), 0.0);
     parallel_for(r.y0, r.y1, [&](int64_t y) {
       double n[25 * 4];
@@ -503,8 +508,8 @@ class Synthesizer {
   // finest level (loop_transitions.h); [(i * levels + k) * admits_stride_ + j * levels + l].
   size_t admits_stride_;
   std::vector<uint32_t> admits_;
-  std::vector<Pixel> corrected_;  // correct()'s buffer
-  std::vector<float> colour_;     // fill_colours()
+  Pixels corrected_;                   // correct()'s buffer
+  UninitializedVector<float> colour_;  // fill_colours()
 };
 
 }  // namespace

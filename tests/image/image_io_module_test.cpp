@@ -1,6 +1,6 @@
 // load_image_io_module (libbake/image/image_io_module.h): the module is found in the first folder that holds it and
 // reads images; a folder without it, or with a file of its name that is no module, is an I/O failure whose one line
-// names every path tried and why.
+// names every path tried and why; start_loading_image_io's background load leaves image calls working.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -8,6 +8,7 @@
 #include <string>
 
 #include "formats/error.h"
+#include "libbake/image/image_io.h"
 #include "libbake/image/image_io_module.h"
 #include "tests/scratch_dir.h"
 
@@ -41,6 +42,16 @@ TEST(ImageIoModule, FoundInTheFirstFolderThatHoldsItAndReadsImages) {
   const Image read = module.load(dir.path() / "t.exr", &info);
   EXPECT_EQ(read.pixels, written.pixels);
   EXPECT_TRUE(info.is_float);
+}
+
+// start_loading_image_io: the background load, started twice, leaves the library usable by the next image call,
+// which waits for it (a command starts it before its bake and writes its image after).
+TEST(ImageIoModule, LoadingInTheBackgroundLeavesImageCallsWorking) {
+  start_loading_image_io();
+  start_loading_image_io();
+  ScratchDir dir;
+  save_image(dir / "a.exr", Image{2, 1, 1, {0.25f, -3.0f}});
+  EXPECT_EQ(load_image(dir / "a.exr").pixels, (std::vector<float>{0.25f, -3.0f}));
 }
 
 TEST(ImageIoModule, MissingEverywhereIsAnIoFailureNamingEveryPathTried) {
