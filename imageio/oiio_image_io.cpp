@@ -14,9 +14,9 @@
 #include <mutex>
 
 #include "formats/atomic_file.h"
-#include "libbake/core/huge_pages.h"
 #include "formats/error.h"
 #include "formats/file_extension.h"
+#include "libbake/core/huge_pages.h"
 
 namespace mbk {
 namespace {
