@@ -4,6 +4,7 @@
 #include "libbake/eval/glints_effect.h"
 #include "libbake/eval/colormap_effect.h"
 #include "libbake/eval/crease_effect.h"
+#include "libbake/eval/histogram_effect.h"
 #include "libbake/eval/mip_effect.h"
 #include "libbake/eval/sh_effect.h"
 #include "libbake/eval/toksvig_effect.h"
@@ -18,6 +19,7 @@ std::span<const EffectShaderEntry> effect_shaders() {
       {"sh", sh_effect_shader},
       {"vmf", vmf_effect_shader},
       {"glints", glints_effect_shader},
+      {"histogram", histogram_effect_shader},
       {"colormap", colormap_effect_shader},
       {"colormap-height", colormap_height_effect_shader},
       {"colormap-slope", colormap_slope_effect_shader},

@@ -2,6 +2,7 @@
 // (see sh_lighting.h).
 #include "libbake/eval/sh_lighting.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -38,27 +39,44 @@ Vec3 lat_long_direction(double phi, double theta) {
   return Vec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
 }
 
-ShCoefficients project_lat_long(const Image& map) {
+std::vector<Vec3> project_lat_long(const Image& map, int order) {
   if (map.width == 0 || map.height == 0 || map.channels == 0)
     throw Error(ExitCode::invalid_input, "empty environment map");
-  ShCoefficients sh;
-  sh.fill(Vec3::Zero());
-  const double dphi = 2.0 * kPi / map.width;
+  const ShBasisEvaluator basis(order);
+  std::vector<Vec3> sh(size_t(basis.count()), Vec3::Zero());
+  std::vector<double> y(sh.size());
+  // Each texel is cut into n x n cells, each weighted by its exact solid angle: the basis is sampled at least four
+  // times per quarter period of band L (cells of at most pi / (4 L)), so that high orders project the piecewise-
+  // constant map instead of aliasing it; order 2 keeps one sample per texel (n = 1 for maps of >= 8 rows).
+  const uint32_t n = order <= 2 ? 1 : std::clamp(uint32_t(std::ceil(4.0 * order / map.height)), 1u, 16u);
+  const double dphi = 2.0 * kPi / (double(map.width) * n);
   for (uint32_t row = 0; row < map.height; ++row) {
-    const double theta_top = kPi * row / map.height, theta_bottom = kPi * (row + 1) / map.height;
-    const double solid_angle = dphi * (std::cos(theta_top) - std::cos(theta_bottom));
-    const double theta = kPi * (row + 0.5) / map.height;
     for (uint32_t i = 0; i < map.width; ++i) {
       Vec3 radiance;
       for (int c = 0; c < 3; ++c) radiance[c] = map.at(i, row, map.channels >= 3 ? uint32_t(c) : 0);
       if (!radiance.allFinite())
         throw Error(ExitCode::invalid_input, "non-finite radiance in environment map",
                     "texel (" + std::to_string(i) + ", " + std::to_string(row) + ")");
-      const ShBasis y = sh_basis(lat_long_direction(dphi * (i + 0.5), theta));
-      for (int k = 0; k < kShCount; ++k) sh[k] += (y[k] * solid_angle) * radiance;
+      for (uint32_t sr = 0; sr < n; ++sr) {
+        const double sub = double(row) * n + sr, rows = double(map.height) * n;
+        const double theta_top = kPi * sub / rows, theta_bottom = kPi * (sub + 1) / rows;
+        const double solid_angle = dphi * (std::cos(theta_top) - std::cos(theta_bottom));
+        const double theta = kPi * (sub + 0.5) / rows;
+        for (uint32_t sc = 0; sc < n; ++sc) {
+          basis.evaluate(lat_long_direction(dphi * (double(i) * n + sc + 0.5), theta), y);
+          for (size_t k = 0; k < sh.size(); ++k) sh[k] += (y[k] * solid_angle) * radiance;
+        }
+      }
     }
   }
   return sh;
+}
+
+ShCoefficients project_lat_long(const Image& map) {
+  const std::vector<Vec3> sh = project_lat_long(map, 2);
+  ShCoefficients out;
+  std::copy(sh.begin(), sh.end(), out.begin());
+  return out;
 }
 
 ShCoefficients constant_radiance_sh(const Vec3& radiance) {

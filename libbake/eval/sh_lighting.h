@@ -30,6 +30,7 @@
 #pragma once
 
 #include <array>
+#include <vector>
 
 #include "libbake/core/eigen.h"
 #include "libbake/image/image_io.h"
@@ -44,6 +45,10 @@ ShBasis sh_basis(const Vec3& unit_direction);
 Vec3 lat_long_direction(double phi, double theta);
 // Projects a lat-long radiance map (1 channel = grey, else the first three are RGB).
 ShCoefficients project_lat_long(const Image& map);
+// The same to any order L (0..kMaxShOrder of libbake/core/sh_basis.h): (L + 1)^2 RGB coefficients, k = l (l + 1) + m.
+// Above order 2 each texel is sampled n x n times (n = ceil(4 L / H), at most 16) so that the projection is that of
+// the piecewise-constant map rather than an aliased one.
+std::vector<Vec3> project_lat_long(const Image& map, int order);
 // Coefficients of a constant radiance from every direction.
 ShCoefficients constant_radiance_sh(const Vec3& radiance);
 

@@ -57,6 +57,7 @@ std::vector<Parameter> colormap_parameters(ColormapCase which) {
   p[4].default_value = "linear";
   if (which != ColormapCase::slope) {
     p.push_back(declare("driver", ParameterType::file, 0, 0, nullptr, "The driver image f (else noise)"));
+    p.back().optional_file = true;
     p.push_back(declare("noise", ParameterType::object, 0, 0, nullptr,
                         "Procedural driver {cells, octaves, gain, seed} (the default without a driver)"));
     p.back().fields = noise_fields();

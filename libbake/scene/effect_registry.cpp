@@ -4,9 +4,10 @@
 namespace mbk {
 
 std::span<const EffectInfo> effect_registry() {
-  static const std::vector<EffectInfo> effects = {mip_effect(),      toksvig_effect(),         sh_effect(),
-                                                  vmf_effect(),      glints_effect(),          crease_effect(),
-                                                  colormap_effect(), colormap_height_effect(), colormap_slope_effect()};
+  static const std::vector<EffectInfo> effects = {mip_effect(),           toksvig_effect(),  sh_effect(),
+                                                  vmf_effect(),           glints_effect(),   histogram_effect(),
+                                                  crease_effect(),        colormap_effect(), colormap_height_effect(),
+                                                  colormap_slope_effect()};
   return effects;
 }
 

@@ -80,6 +80,7 @@ std::string effect_file_option(JsonObjectReader& r, const std::string& key, cons
 // The effects, one file each.
 EffectInfo mip_effect();
 EffectInfo glints_effect();
+EffectInfo histogram_effect();  // effect_histogram.cpp
 EffectInfo sh_effect();
 EffectInfo vmf_effect();
 EffectInfo toksvig_effect();

@@ -21,7 +21,7 @@ enum class ParameterType {
   number,   // a finite real number in [min, max]
   choice,   // one of `choices`
   size2,    // two integers in [min, max]: [width, height] in a scene, "WxH" on the command line
-  file,     // a path (in a scene relative to the scene file); required
+  file,     // a path (in a scene relative to the scene file); required unless `optional_file`
   object,   // a JSON object the effect reads itself (scenes only)
 };
 
@@ -35,7 +35,9 @@ struct Parameter {
   std::vector<uint32_t> allowed;     // integer: when not empty, the only values
   std::vector<std::string> choices;  // choice
   nlohmann::json default_value;      // null: none (the doc says what happens without a value)
-  bool required = false;             // no default: a value must be given (files always are)
+  bool required = false;             // no default: a value must be given (files always are, unless optional_file)
+  bool optional_file = false;        // file: may be absent; the effect reads it only when given (read_parameter
+                                     // is not for such keys: effects read them with JsonObjectReader::optional)
   std::string doc;
   // For an effect key that is a technique's parameter under another name or a narrower range: "rmq.patch".
   std::string source;

@@ -33,7 +33,7 @@ json scene_with(const json& effect) {
 json effect_object(const EffectInfo& e, const json& extra = json::object()) {
   json o = {{"name", e.name}};
   for (const Parameter& p : e.parameters)
-    if (p.type == ParameterType::file && p.name != "driver") o[p.name] = "file.json";
+    if (p.type == ParameterType::file && !p.optional_file) o[p.name] = "file.json";
   for (auto it = extra.begin(); it != extra.end(); ++it) o[it.key()] = it.value();
   return o;
 }
@@ -352,7 +352,7 @@ const SceneDocRow* scene_doc_row(const std::vector<SceneDocRow>& rows, const std
 
 // A declared default as a documented default cell must spell it.
 void expect_documented_default(const Parameter& p, const std::string& cell, const std::string& what) {
-  if (p.required || (p.type == ParameterType::file && p.name != "driver")) {
+  if (p.required || (p.type == ParameterType::file && !p.optional_file)) {
     EXPECT_EQ(cell.rfind("required", 0), 0u) << what << ": " << cell;
   } else if (p.type == ParameterType::object && !p.fields.empty()) {
     json defaults = json::object();
