@@ -1,6 +1,7 @@
 // The histogram effect's shaders (see histogram_effect.h).
 #include "libbake/eval/histogram_effect.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <memory>
@@ -52,8 +53,8 @@ std::shared_ptr<const RoughnessTexture> roughness_of(const EffectShaderRequest& 
   const auto file = request.use.files.find("roughness_map");
   if (file == request.use.files.end())
     return std::make_shared<RoughnessTexture>(request.use.options.at("roughness").get<double>());
-  const auto image = request.cache.get<Image>("roughness map|" + file->second.string(),
-                                              [&] { return load_image(file->second); });
+  const auto image =
+      request.cache.get<Image>("roughness map|" + file->second.string(), [&] { return load_image(file->second); });
   return std::make_shared<RoughnessTexture>(image, where + ": roughness_map " + file->second.string());
 }
 
@@ -80,6 +81,7 @@ class FilteredHistogramShader : public MaterialShader {
     std::shared_ptr<const RoughnessZhTable> zh;
     std::unique_ptr<const ShBasisEvaluator> basis;  // order L
     std::vector<Vec3> light_sh;                     // the distant lighting to order L; empty without any
+    double narrowest_sigma = 0;                     // narrowest_resolved_roughness(L)
   };
   explicit FilteredHistogramShader(std::shared_ptr<const Data> data) : d_(std::move(data)) {}
 
@@ -124,7 +126,7 @@ class FilteredHistogramShader : public MaterialShader {
       const double chv = world[b].dot(v);
       if (!(chv > 0.0)) continue;
       const ReflectedLobes lobes = reflected_lobes(world[b], v, sigma);
-      d.zh->band_factors(lobes.table_sigma, lambda);
+      d.zh->band_factors(std::max(lobes.table_sigma, d.narrowest_sigma), lambda);
       for (int i = 0; i < lobes.count; ++i) {
         const Vec3& r = lobes.axes[size_t(i)];
         const double crn = r.dot(n), chv_i = lobes.view_cosines[size_t(i)];
@@ -234,8 +236,9 @@ ShaderPtr histogram_effect_shader(const EffectShaderRequest& request) {
     data->zh = request.cache.get<RoughnessZhTable>("roughness zh|" + std::to_string(order),
                                                    [&] { return RoughnessZhTable(order); });
     data->basis = std::make_unique<ShBasisEvaluator>(order);
-    data->light_sh = *request.cache.get<std::vector<Vec3>>("distant sh|" + std::to_string(order),
-                                                           [&] { return distant.sh(order); });
+    data->narrowest_sigma = narrowest_resolved_roughness(order);
+    data->light_sh =
+        *request.cache.get<std::vector<Vec3>>("distant sh|" + std::to_string(order), [&] { return distant.sh(order); });
   }
   return std::make_shared<FilteredHistogramShader>(data);
 }

@@ -40,6 +40,10 @@ Vec3 sample_roughness_lobe(const Vec3& mu, double sigma, double u1, double u2) {
   return (c * mu + s * std::cos(phi) * t + s * std::sin(phi) * bt).normalized();
 }
 
+double narrowest_resolved_roughness(int order) {
+  return order <= 0 ? 1.0 : std::sqrt(1.0 / (double(order) * (order + 1.0)));
+}
+
 void zonal_lobe_band_factors(double kappa, std::span<double> out) {
   if (out.empty()) return;
   if (std::isinf(kappa)) {

@@ -54,7 +54,8 @@ std::vector<Parameter> histogram_parameters() {
 EffectInfo histogram_effect() {
   EffectInfo e;
   e.name = "histogram";
-  e.summary = "glints under every light with spatially varying roughness from binned P-NDFs ([Shah24]; bakes histogram)";
+  e.summary =
+      "glints under every light with spatially varying roughness from binned P-NDFs ([Shah24]; bakes histogram)";
   e.parameters = histogram_parameters();
   e.parse_options = [parameters = e.parameters](JsonObjectReader& r, const std::filesystem::path& folder) {
     EffectUse use;
@@ -70,21 +71,19 @@ EffectInfo histogram_effect() {
   e.assets = [](const Material& m, const EffectUse& use) {
     const BakeInput map = normal_map_input(m);
     const HistogramBakeOptions options = histogram_bake_options(use.options);
-    AssetRecipe recipe{"histogram",
-                       {{"method", use.options.at("method")},
-                        {"theta_bins_requested", options.theta_bins},
-                        {"phi_bins", options.phi_bins}},
-                       {map},
-                       [map, options](Progress& progress) {
-                         const LoadedNormalMap loaded = load_normal_map(map.path, map.normal_map->load_options());
-                         const uint64_t seed = histogram_seed(loaded.record.content_hash);
-                         return histogram_asset_writer(loaded, options, seed,
-                                                       bake_histogram(loaded.map, options, seed, progress,
-                                                                      map.path.string()));
-                       },
-                       {{"method", use.options.at("method")},
-                        {"theta_bins", options.theta_bins},
-                        {"phi_bins", options.phi_bins}}};
+    AssetRecipe recipe{
+        "histogram",
+        {{"method", use.options.at("method")},
+         {"theta_bins_requested", options.theta_bins},
+         {"phi_bins", options.phi_bins}},
+        {map},
+        [map, options](Progress& progress) {
+          const LoadedNormalMap loaded = load_normal_map(map.path, map.normal_map->load_options());
+          const uint64_t seed = histogram_seed(loaded.record.content_hash);
+          return histogram_asset_writer(loaded, options, seed,
+                                        bake_histogram(loaded.map, options, seed, progress, map.path.string()));
+        },
+        {{"method", use.options.at("method")}, {"theta_bins", options.theta_bins}, {"phi_bins", options.phi_bins}}};
     return std::vector<AssetRecipe>{recipe};
   };
   return e;

@@ -127,6 +127,15 @@ TEST(RoughnessZhTable, RotatedLobesAtThePolesAreFiniteAndZonal) {
   }
 }
 
+TEST(RoughnessZhTable, NarrowestResolvedRoughnessLeavesAnEighthOfTheLastBand) {
+  for (const int order : {1, 8, 20, 40, 60, 128}) {
+    const double sigma = narrowest_resolved_roughness(order);
+    std::vector<double> lambda(size_t(order) + 1);
+    vmf_band_factors(1.0 / (4.0 * sigma * sigma), lambda);
+    EXPECT_NEAR(lambda.back(), std::exp(-2.0), 0.03) << order;  // exp(-l (l + 1) / (2 kappa)) is the large-l form
+  }
+}
+
 TEST(RoughnessZhTable, LobeIsNormalisedAndItsSamplerFollowsIt) {
   for (const double sigma : {1e-3, 0.01, 0.1, 0.5, 1.0}) {
     double mass = 0.0;
