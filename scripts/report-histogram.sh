@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# The numbers and pictures of examples/results/histogram/REPORT.md ([Shah24] binned P-NDF glints under an
+# environment map and a point light, examples/run_histogram.sh): for the generated scene and, when ../shared/data/real
+# is beside the repository, the real-map scene, it bakes and renders the effect, the Monte Carlo reference of
+# RAYS x RAYS rays (two seeds: the floor) and plain normal mapping, copies the pictures (effect | reference | plain,
+# one strip per scene) into examples/results/histogram/, and prints Markdown tables: bake time and asset bytes per map; render time and block
+# L1 (relative L1 of 8 x 8 block means against the reference) of the effect and of plain normal mapping beside the
+# floor; the same per light; and the environment alone at SH orders 10, 20, 40 and 60 (time and error), so the
+# order's cost and accuracy read side by side.
+#
+#   bash scripts/report-histogram.sh [BUILD_DIR] [RAYS]     # default build/ (a Release build), RAYS = 16
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build="${1:-build}"
+rays="${2:-16}"
+exe="$(pwd)/$build/microbake"
+[ -x "$exe" ] || { echo "report: $exe not found (build first: scripts/build.sh $build)" >&2; exit 2; }
+command -v jq >/dev/null || { echo "report: jq is needed (apt-get install jq)" >&2; exit 2; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+out=examples/results/histogram
+mkdir -p "$out"
+seconds() { sed -n 's/^rendered .*, \([0-9.]*\) s$/\1/p' | head -1; }
+block_l1() { "$exe" compare "$1" "$2" --block 8 --format json | jq -r '.block_relative_l1 * 10000 | round / 10000'; }
+
+scenes=(histogram)
+[ -f ../shared/data/real/brushed_streaks_diagonal.png ] && scenes+=(histogram_real)
+for s in "${scenes[@]}"; do
+  bash examples/run_histogram.sh "$exe" "$work/$s" "examples/scenes/$s.json" "$rays" >"$work/$s.log" 2>&1
+  cp "$work/$s/strip.png" "$out/${s}_strip.png"  # effect | reference | plain normal mapping
+done
+
+echo "Machine: $(nproc) cores, $(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1); load average $(cut -d' ' -f1-3 /proc/loadavg)."
+echo "Command: \`bash scripts/report-histogram.sh $build $rays\` (reference: $rays x $rays rays per pixel)."
+echo
+echo "| scene | map | bins | asset bytes | bake (s) |"
+echo "|---|---|---|---|---|"
+for s in "${scenes[@]}"; do
+  for f in "$work/$s"/assets/*.histogram.*.mbk; do
+    info=$("$exe" info "$f" --format json)
+    map=$(echo "$info" | jq -r '.metadata.inputs[0].path | split("/") | last')
+    bins=$(echo "$info" | jq -r '.metadata.parameters | "\(.theta_bins) x \(.phi_bins)"')
+    secs=$(/usr/bin/time -f %e "$exe" histogram "$(echo "$info" | jq -r '.metadata.inputs[0].path')" \
+      --convention "$(echo "$info" | jq -r '.metadata.inputs[0].convention')" -q -o "$work/timed.mbk" 2>&1 | tail -1)
+    echo "| $s | $map | $bins | $(stat -c %s "$f") | $secs |"
+  done
+done
+echo
+echo "| scene | effect render (s) | reference render (s) | plain render (s) | effect block L1 | plain block L1 | floor | effect / floor |"
+echo "|---|---|---|---|---|---|---|---|"
+for s in "${scenes[@]}"; do
+  d="$work/$s"
+  t_effect=$(grep "^rendered $d/histogram.exr" "$d.log" | seconds)
+  t_reference=$(grep "^rendered $d/histogram_reference.exr" "$d.log" | seconds)
+  t_plain=$(grep "^rendered $d/histogram_plain.exr" "$d.log" | seconds)
+  e=$(block_l1 "$d/histogram.exr" "$d/histogram_reference.exr")
+  p=$(block_l1 "$d/histogram_plain.exr" "$d/histogram_reference.exr")
+  f=$(block_l1 "$d/histogram_reference_seed1.exr" "$d/histogram_reference.exr")
+  echo "| $s | $t_effect | $t_reference | $t_plain | $e | $p | $f | $(echo "scale=1; $e / $f" | bc) |"
+done
+echo
+echo "Per light (half resolution, each with its own floor):"
+echo
+echo "| scene | light | effect block L1 | floor | effect / floor |"
+echo "|---|---|---|---|---|"
+for s in "${scenes[@]}"; do
+  sed -n 's/^\(environment\|point\): effect \([0-9.]*\), floor \([0-9.]*\), ratio \([0-9.]*\)$/\1 \2 \3 \4/p' \
+    "$work/$s.log" | while read -r light e f r; do
+    printf '| %s | %s | %.4f | %.4f | %s |\n' "$s" "$light" "$e" "$f" "$r"
+  done
+done
+echo
+echo "The environment alone (half resolution) at several SH orders of the distant lighting:"
+echo
+echo "| scene | SH order | effect render (s) | effect block L1 | floor | effect / floor |"
+echo "|---|---|---|---|---|---|"
+for s in "${scenes[@]}"; do
+  d="$work/$s/environment"
+  f=$(block_l1 "$d/reference_seed1.exr" "$d/reference.exr")
+  for order in 10 20 40 60; do
+    jq --argjson o "$order" '(.materials[].effects[]? | select(.name == "histogram") | .sh_order) = $o' \
+      "$d/scene.json" >"$d/order.json"
+    t=$("$exe" render "$d/order.json" --assets "$work/$s/assets" -o "$d/order$order.exr" | seconds)
+    e=$(block_l1 "$d/order$order.exr" "$d/reference.exr")
+    echo "| $s | $order | $t | $e | $f | $(echo "scale=1; $e / $f" | bc) |"
+  done
+done
