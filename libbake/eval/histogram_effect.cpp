@@ -11,7 +11,7 @@
 #include "formats/asset.h"
 #include "formats/error.h"
 #include "libbake/core/hash.h"
-#include "libbake/core/sh_basis.h"
+#include "libbake/eval/band_radiance_grid.h"
 #include "libbake/eval/distant_radiance.h"
 #include "libbake/eval/roughness_texture.h"
 #include "libbake/histogram/binned_ndf_source.h"
@@ -79,9 +79,8 @@ class FilteredHistogramShader : public MaterialShader {
     std::unique_ptr<const BinnedNdfSource> source;
     std::vector<Vec3> bin_normals;
     std::shared_ptr<const RoughnessZhTable> zh;
-    std::unique_ptr<const ShBasisEvaluator> basis;  // order L
-    std::vector<Vec3> light_sh;                     // the distant lighting to order L; empty without any
-    double narrowest_sigma = 0;                     // narrowest_resolved_roughness(L)
+    std::shared_ptr<const BandRadianceGrid> grid;  // the distant lighting to order L; null without any
+    double narrowest_sigma = 0;                    // narrowest_resolved_roughness(L)
   };
   explicit FilteredHistogramShader(std::shared_ptr<const Data> data) : d_(std::move(data)) {}
 
@@ -115,41 +114,26 @@ class FilteredHistogramShader : public MaterialShader {
         if (p[b] > 0.0) sum += p[b] * roughness_lobe(h.dot(world[b]), sigma);
       return sum;
     });
-    if (d.light_sh.empty()) return out;
+    if (!d.grid) return out;
 
-    // Eqs. 12-13: each bin's mirror-image lobes (reflected_lobe.h) as two SH vectors, then Eq. 9's dot products.
-    const int order = d.basis->order();
-    std::vector<double> lambda(size_t(order) + 1), y(size_t(d.basis->count()));
-    std::vector<double> a(y.size(), 0.0), s_weighted(y.size(), 0.0);
+    // Eqs. 12-13 and 9: each bin's mirror-image lobes (reflected_lobe.h), rotated zonal lobes dotted with the
+    // lighting's SH, lobe by lobe through the band radiance grid; F = f0 + (1 - f0) (1 - v.h)^5 at each lobe's h.
+    std::vector<double> lambda(size_t(d.grid->order()) + 1);
+    Vec3 specular = Vec3::Zero();
     for (size_t b = 0; b < bins; ++b) {
-      if (!(p[b] > 0.0)) continue;
-      const double chv = world[b].dot(v);
-      if (!(chv > 0.0)) continue;
+      if (!(p[b] > 0.0) || !(world[b].dot(v) > 0.0)) continue;
       const ReflectedLobes lobes = reflected_lobes(world[b], v, sigma);
       d.zh->band_factors(std::max(lobes.table_sigma, d.narrowest_sigma), lambda);
       for (int i = 0; i < lobes.count; ++i) {
         const Vec3& r = lobes.axes[size_t(i)];
-        const double crn = r.dot(n), chv_i = lobes.view_cosines[size_t(i)];
-        if (!(crn > 0.0 && chv_i > 0.0)) continue;  // below the macro surface, or a half vector facing away
-        const double g = p[b] * lobes.weights[size_t(i)] * smith_g2(brdf.lobe, crn, cv) * chv_i / cv;
-        const double s = std::pow(1.0 - chv_i, 5.0);
-        d.basis->evaluate(r, y);
-        for (int l = 0; l <= order; ++l) {
-          const double f = g * lambda[size_t(l)];
-          for (int m = -l; m <= l; ++m) {
-            const size_t k = size_t(sh_index(l, m));
-            a[k] += f * y[k];
-            s_weighted[k] += f * s * y[k];
-          }
-        }
+        const double crn = r.dot(n), chv = lobes.view_cosines[size_t(i)];
+        if (!(crn > 0.0 && chv > 0.0)) continue;  // below the macro surface, or a half vector facing away
+        const double g = p[b] * lobes.weights[size_t(i)] * smith_g2(brdf.lobe, crn, cv) * chv / cv;
+        const double s = std::pow(1.0 - chv, 5.0);
+        specular += g * (brdf.f0 + (Vec3::Ones() - brdf.f0) * s).cwiseProduct(d.grid->lobe_radiance(r, lambda));
       }
     }
-    Vec3 la = Vec3::Zero(), lb = Vec3::Zero();
-    for (size_t k = 0; k < y.size(); ++k) {
-      la += a[k] * d.light_sh[k];
-      lb += s_weighted[k] * d.light_sh[k];
-    }
-    out += (brdf.f0.cwiseProduct(la) + (Vec3::Ones() - brdf.f0).cwiseProduct(lb)).cwiseMax(0.0);
+    out += specular.cwiseMax(0.0);
     return out;
   }
 
@@ -235,10 +219,9 @@ ShaderPtr histogram_effect_shader(const EffectShaderRequest& request) {
   if (!distant.empty()) {
     data->zh = request.cache.get<RoughnessZhTable>("roughness zh|" + std::to_string(order),
                                                    [&] { return RoughnessZhTable(order); });
-    data->basis = std::make_unique<ShBasisEvaluator>(order);
+    data->grid = request.cache.get<BandRadianceGrid>("band radiance|" + std::to_string(order),
+                                                     [&] { return BandRadianceGrid(distant.sh(order)); });
     data->narrowest_sigma = narrowest_resolved_roughness(order);
-    data->light_sh =
-        *request.cache.get<std::vector<Vec3>>("distant sh|" + std::to_string(order), [&] { return distant.sh(order); });
   }
   return std::make_shared<FilteredHistogramShader>(data);
 }

@@ -13,14 +13,16 @@
 //            Distant light (environment maps and skies): L = sum_b P_b F(v.w_b) G2(n.r_b, n.v) (v.w_b) / (n.v)
 //            * integral L_i(w) G'_b(w) dw, the integral over the reflected lobe G'_b of bin b, whose axis is the
 //            mirror direction r_b = 2 (v.w_b) w_b - v and whose band factors are the table's (kappa / 4, the
-//            spherical warp; roughness_zh_table.h). With Schlick's F = f0 + (1 - f0) s_b, s_b = (1 - v.w_b)^5, the
-//            lobes sum into two SH vectors of order L (Eq. 12 with Eq. 13's rotated zonal lobes)
-//                A_lm = sum_b P_b g_b Lambda_l(sigma) Y_lm(r_b),  B_lm = sum_b P_b g_b s_b Lambda_l(sigma) Y_lm(r_b),
-//            g_b = G2 (v.w_b) / (n.v), and the radiance is f0 (A . L_SH) + (1 - f0) (B . L_SH) (Eq. 9), L_SH the
-//            distant lighting projected to order L (distant_radiance.h). This is the paper's Eqs. 8-9 with the light
-//            kept in the world frame (view-independent) and the NDF's lobes warped to reflected directions, instead
-//            of a light projection per view direction. Bins whose mirror direction is below the macro surface
-//            (n.r_b <= 0) or that face away from the viewer reflect nothing.
+//            spherical warp; roughness_zh_table.h), written as a few isotropic zonal lobes i along the plane of
+//            incidence (reflected_lobe.h: the mirror image is 2 sigma wide in that plane and 2 (v.w_b) sigma across
+//            it), each rotated to its axis r_i by Eq. 13 (g_lm = Lambda_l(sigma_i) Y_lm(r_i)) and dotted with the
+//            distant lighting's SH of order L (Eq. 9): sum_lm g_lm L_lm = sum_l Lambda_l B_l(r_i), with the
+//            per-band radiance B_l read from a direction grid (band_radiance_grid.h). Summed over the lobes that is
+//            Eq. 12's NDF_SH dotted with L_SH, with F (Schlick, f0 + (1 - f0)(1 - v.h_i)^5), G2 and the Jacobian's
+//            v.h_i evaluated at each lobe's own half vector h_i. This is the paper's Eqs. 8-9 with the light
+//            kept in the world frame (view-independent) and the NDF's lobes mirrored about the view direction,
+//            instead of a light projection per view direction. Lobes whose axis is below the macro surface
+//            (n.r_i <= 0) or whose half vector faces away from the viewer reflect nothing.
 // reference  Eq. 2 by Monte Carlo: each of the reference's rays sees the normal of the texel its exact uv falls in
 //            (equal weights over the footprint, no binning), point lights through G_r around it, and distant light
 //            by kHistogramReferenceLobeSamples directions h drawn from G_r per ray (stratified, seeded by the ray's
