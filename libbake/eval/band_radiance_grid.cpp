@@ -34,9 +34,8 @@ BandRadianceGrid::BandRadianceGrid(const std::vector<Vec3>& light_sh)
 }
 
 Vec3 BandRadianceGrid::lobe_radiance(const Vec3& r, std::span<const double> lambda) const {
-  const double theta = std::acos(std::clamp(r.y(), -1.0, 1.0));
-  double phi = std::atan2(r.z(), r.x());
-  if (phi < 0.0) phi += 2.0 * std::numbers::pi;
+  const Vec2 angles = lat_long_angles(r);
+  const double phi = angles.x(), theta = angles.y();
   const double y = theta / std::numbers::pi * (rows_ - 1), x = phi / (2.0 * std::numbers::pi) * columns_;
   const int row0 = std::min(int(y), rows_ - 2), column0 = int(x) % columns_;
   const double ty = y - row0, tx = x - std::floor(x);
@@ -50,8 +49,7 @@ Vec3 BandRadianceGrid::lobe_radiance(const Vec3& r, std::span<const double> lamb
   Vec3 out = Vec3::Zero();
   for (int t = 0; t < 4; ++t) {
     Vec3 sum = Vec3::Zero();
-    for (size_t l = 0; l < bands; ++l)
-      sum += lambda[l] * Vec3(taps[t][3 * l], taps[t][3 * l + 1], taps[t][3 * l + 2]);
+    for (size_t l = 0; l < bands; ++l) sum += lambda[l] * Vec3(taps[t][3 * l], taps[t][3 * l + 1], taps[t][3 * l + 2]);
     out += weights[t] * sum;
   }
   return out;

@@ -7,11 +7,12 @@
 //     sum_lm L_lm Lambda_l Y_lm(r) = sum_l Lambda_l B_l(r),     B_l(r) = sum_m L_lm Y_lm(r)  (RGB, l = 0..L).
 // B_l is stored at the nodes of a lat-long grid (the conventions of sh_lighting.h: theta from +Y, phi = atan2(z, x))
 // with theta_j = pi j / (R - 1), j = 0..R-1 (both poles) and phi_i = 2 pi i / C, C = 2 (R - 1), R - 1 = 4 L (a step of
-// pi / (4 L)), and read bilinearly (phi wrapping). B_l oscillates at most l times around a great circle, so the
-// interpolation errs at most (pi l / (4 L))^2 / 8 <= 7.7% of band l's amplitude, on the highest band only, which every
-// lobe the shader uses attenuates to <= e^{-2} (narrowest_resolved_roughness): test
-// BandRadianceGrid.LookupsMatchTheDirectSum (random lighting, lobes and directions). Built in parallel by rows; at
-// order 40 the grid holds 320 x 161 x 41 RGB floats (25 MB), at 60 480 x 241 x 61 (85 MB).
+// pi / (4 L)), and read bilinearly (phi wrapping). B_l oscillates at most ~l times around a great circle, so the
+// interpolation errs by about (pi l / (4 L))^2 / 8 of band l's amplitude per axis (<= 7.7% on the highest band, up to
+// twice that in the two axes together), and every lobe the shader uses attenuates the highest band to <= e^{-2}
+// (narrowest_resolved_roughness): test BandRadianceGrid.LookupsMatchTheDirectSum (random lighting, lobes and
+// directions, against that bound). Built in parallel by rows; at order 40 the grid holds 161 x 320 x 41 RGB floats
+// (25 MB), at 64 257 x 512 x 65 (103 MB).
 #pragma once
 
 #include <span>

@@ -24,10 +24,8 @@ DistantRadiance DistantRadiance::load(const Scene& scene, LoadCache& cache) {
 Vec3 DistantRadiance::radiance(const Vec3& d) const {
   Vec3 sum = sky_;
   if (maps_.empty()) return sum;
-  // d = (sin(theta) cos(phi), cos(theta), sin(theta) sin(phi)), theta from +Y, phi in [0, 2 pi).
-  const double theta = std::acos(std::clamp(d.y(), -1.0, 1.0));
-  double phi = std::atan2(d.z(), d.x());
-  if (phi < 0.0) phi += 2.0 * std::numbers::pi;
+  const Vec2 angles = lat_long_angles(d);
+  const double phi = angles.x(), theta = angles.y();
   for (const Map& m : maps_) {
     const Image& im = *m.image;
     const uint32_t i = std::min(uint32_t(phi / (2.0 * std::numbers::pi) * im.width), im.width - 1);
@@ -45,7 +43,7 @@ std::vector<Vec3> DistantRadiance::sh(int order) const {
     const std::vector<Vec3> p = project_lat_long(*m.image, order);
     for (size_t k = 0; k < out.size(); ++k) out[k] += m.scale * p[k];
   }
-  out[0] += 2.0 * std::sqrt(std::numbers::pi) * sky_;  // a constant L: integral of L Y00 = L 4 pi / (2 sqrt(pi))
+  if (has_sky_) out[0] += constant_radiance_sh(sky_)[0];
   return out;
 }
 

@@ -16,6 +16,7 @@
 #include "libbake/eval/roughness_texture.h"
 #include "libbake/histogram/binned_ndf_source.h"
 #include "libbake/histogram/reflected_lobe.h"
+#include "libbake/histogram/roughness_lobe.h"
 #include "libbake/histogram/roughness_zh_table.h"
 #include "libbake/image/normal_map.h"
 #include "libbake/image/texture_taps.h"
@@ -90,7 +91,7 @@ class FilteredHistogramShader : public MaterialShader {
     const Vec3& n = c.frame.N;
     const Vec3& v = c.to_viewer;
     const double cv = n.dot(v);
-    if (!(cv > 0.0)) return out;
+    if (!(cv > 0.0) || !c.uv.allFinite()) return out;
 
     const size_t bins = d.bin_normals.size();
     std::vector<double> p(bins, 0.0), q(bins);
@@ -117,7 +118,7 @@ class FilteredHistogramShader : public MaterialShader {
     if (!d.grid) return out;
 
     // Eqs. 12-13 and 9: each bin's mirror-image lobes (reflected_lobe.h), rotated zonal lobes dotted with the
-    // lighting's SH, lobe by lobe through the band radiance grid; F = f0 + (1 - f0) (1 - v.h)^5 at each lobe's h.
+    // lighting's SH, lobe by lobe through the band radiance grid; F and G2 at each lobe's own half vector.
     std::vector<double> lambda(size_t(d.grid->order()) + 1);
     Vec3 specular = Vec3::Zero();
     for (size_t b = 0; b < bins; ++b) {
@@ -129,8 +130,7 @@ class FilteredHistogramShader : public MaterialShader {
         const double crn = r.dot(n), chv = lobes.view_cosines[size_t(i)];
         if (!(crn > 0.0 && chv > 0.0)) continue;  // below the macro surface, or a half vector facing away
         const double g = p[b] * lobes.weights[size_t(i)] * smith_g2(brdf.lobe, crn, cv) * chv / cv;
-        const double s = std::pow(1.0 - chv, 5.0);
-        specular += g * (brdf.f0 + (Vec3::Ones() - brdf.f0) * s).cwiseProduct(d.grid->lobe_radiance(r, lambda));
+        specular += g * schlick_fresnel(brdf.f0, chv).cwiseProduct(d.grid->lobe_radiance(r, lambda));
       }
     }
     out += specular.cwiseMax(0.0);
@@ -202,8 +202,9 @@ ShaderPtr histogram_effect_shader(const EffectShaderRequest& request) {
     auto data = std::make_shared<ReferenceHistogramShader::Data>();
     data->common = common;
     const NormalMapRef& ref = *request.material.normal_map;
-    data->map = request.cache.get<LoadedNormalMap>("histogram normals|" + ref.path.string(),
-                                                   [&] { return load_normal_map(ref.path, ref.load_options()); });
+    const std::string key = "histogram normals|" + ref.path.string() + "|" + convention_request_name(ref.convention) +
+                            (ref.repair ? "|repair" : "|error");
+    data->map = request.cache.get<LoadedNormalMap>(key, [&] { return load_normal_map(ref.path, ref.load_options()); });
     data->distant = DistantRadiance::load(request.scene, request.cache);
     return std::make_shared<ReferenceHistogramShader>(data);
   }

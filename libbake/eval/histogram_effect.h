@@ -4,7 +4,7 @@
 // tangent frame of the hit (x = +u, y = +v, z = the macro normal n), bin b's direction w_b (its theta centre and phi
 // centre 2 pi (i + 1/2) / N) and P_b the footprint's probability of bin b:
 //
-//   D(h) = sum_b P_b G_r(h; w_b, sigma)                                     (Eq. 3; G_r in roughness_zh_table.h)
+//   D(h) = sum_b P_b G_r(h; w_b, sigma)                                     (Eq. 3; G_r in roughness_lobe.h)
 //
 // filtered   P_b from the baked asset over the pixel's footprint: its anisotropic probes (uv_footprint.h), each a
 //            square of the probe's width in texels (binned_ndf_source.h), equally weighted.

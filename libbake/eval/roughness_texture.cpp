@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "formats/error.h"
-#include "libbake/histogram/roughness_zh_table.h"
+#include "libbake/histogram/roughness_lobe.h"
 #include "libbake/image/texture_taps.h"
 
 namespace mbk {

@@ -5,7 +5,7 @@
 #include <limits>
 #include <numbers>
 
-#include "libbake/image/image_io.h"
+#include "libbake/eval/distant_radiance.h"
 
 namespace mbk {
 
@@ -13,17 +13,11 @@ SceneLighting load_scene_lighting(const Scene& scene) {
   SceneLighting out;
   out.points = scene.lights.points;
   out.directionals = scene.lights.directionals;
-  out.distant.fill(Vec3::Zero());
-  for (const auto& env : scene.lights.environments) {
-    const ShCoefficients sh = project_lat_long(load_image(env.path));
-    for (int k = 0; k < kShCount; ++k) out.distant[k] += env.scale * sh[k];
-    out.has_distant = true;
-  }
-  for (const auto& sky : scene.lights.skies) {
-    const ShCoefficients sh = constant_radiance_sh(sky.radiance);
-    for (int k = 0; k < kShCount; ++k) out.distant[k] += sh[k];
-    out.has_distant = true;
-  }
+  LoadCache cache;
+  const DistantRadiance distant = DistantRadiance::load(scene, cache);
+  out.has_distant = !distant.empty();
+  const std::vector<Vec3> sh = distant.sh(2);
+  std::copy(sh.begin(), sh.end(), out.distant.begin());
   return out;
 }
 

@@ -72,6 +72,13 @@ std::vector<Vec3> project_lat_long(const Image& map, int order) {
   return sh;
 }
 
+Vec2 lat_long_angles(const Vec3& d) {
+  double phi = std::atan2(d.z(), d.x());
+  if (phi < 0.0) phi += 2.0 * kPi;
+  if (phi >= 2.0 * kPi) phi = 0.0;  // -0 rounds up to 2 pi
+  return Vec2(phi, std::acos(std::clamp(d.y(), -1.0, 1.0)));
+}
+
 ShCoefficients project_lat_long(const Image& map) {
   const std::vector<Vec3> sh = project_lat_long(map, 2);
   ShCoefficients out;

@@ -1,6 +1,6 @@
 // Distant lighting as spherical harmonics of order 2 (9 coefficients per RGB channel), the way a shader
 // receives an environment: Ramamoorthi & Hanrahan, "An Efficient Representation for Irradiance
-// Environment Maps", SIGGRAPH 2001.
+// Environment Maps", SIGGRAPH 2001. (project_lat_long also projects to any order, for the histogram effect.)
 //
 // Basis: libbake/core/sh_basis.h (real, orthonormal, no Condon-Shortley phase, k = l (l + 1) + m), evaluated
 // on world directions (x, y, z):
@@ -43,6 +43,8 @@ using ShCoefficients = std::array<Vec3, kShCount>;  // RGB per basis function
 
 ShBasis sh_basis(const Vec3& unit_direction);
 Vec3 lat_long_direction(double phi, double theta);
+// Its inverse: (phi in [0, 2 pi), theta in [0, pi]) of a unit direction.
+Vec2 lat_long_angles(const Vec3& unit_direction);
 // Projects a lat-long radiance map (1 channel = grey, else the first three are RGB).
 ShCoefficients project_lat_long(const Image& map);
 // The same to any order L (0..kMaxShOrder of libbake/core/sh_basis.h): (L + 1)^2 RGB coefficients, k = l (l + 1) + m.

@@ -6,9 +6,10 @@
 
 namespace mbk {
 
-FootprintTexels footprint_texels(const SquareFootprint& f) {
+FootprintTexels square_footprint_texels(const SquareFootprint& f) {
   FootprintTexels t;
-  const double side = std::isfinite(f.side) ? std::max(1.0, f.side) : 1.0;
+  // NaN is taken as one texel; +inf (a grazing footprint) as the largest side, i.e. the whole map many times over.
+  const double side = std::isnan(f.side) ? 1.0 : std::max(1.0, f.side);
   // Sides above 2^24 texels (1024 times the largest map's) are clamped, so that w^2 stays far inside 64 bits; such a
   // footprint's probabilities then differ from the unclamped ones by less than 16384 / 2^24 = 0.001.
   t.w = uint64_t(std::llround(std::min(side, 0x1p24)));
@@ -19,7 +20,7 @@ FootprintTexels footprint_texels(const SquareFootprint& f) {
 }
 
 void ExactBinnedNdf::footprint_probabilities(const SquareFootprint& f, std::span<double> out) const {
-  const FootprintTexels t = footprint_texels(f);
+  const FootprintTexels t = square_footprint_texels(f);
   const uint32_t bins = view_.bins.count();
   std::vector<uint64_t> counts(bins);
   footprint_histogram(view_.table, t.x0, t.row0, t.w, t.w, counts);

@@ -5,9 +5,9 @@
 //
 // Footprints are squares on the map repeated in both directions, in texels of the finest map: centre (x, y) with x
 // to the right and y down from the top-left corner (texel (i, row) covers [i, i + 1) x [row, row + 1)), side >= 1
-// (smaller sides are taken as 1; sides above 2^24 as 2^24). The exact source covers the whole texels of the w x w
-// square with w = max(1, round(side)) whose top-left texel is (floor(x - w / 2 + 1/2), floor(y - w / 2 + 1/2)), equal
-// weights
+// (smaller sides, and NaN, are taken as 1; sides above 2^24, +inf included, as 2^24). The centre must be finite. The
+// exact source covers the whole texels of the w x w square with w = max(1, round(side)) whose top-left texel is
+// (floor(x - w / 2 + 1/2), floor(y - w / 2 + 1/2)), equal weights
 // ([Shah24] Eq. 2).
 #pragma once
 
@@ -29,7 +29,7 @@ struct FootprintTexels {
   int64_t x0 = 0, row0 = 0;
   uint64_t w = 1;
 };
-FootprintTexels footprint_texels(const SquareFootprint& f);
+FootprintTexels square_footprint_texels(const SquareFootprint& f);
 
 class BinnedNdfSource {
  public:

@@ -12,9 +12,14 @@
 // Zonal harmonics represent only isotropic lobes, so the anisotropic image is written as an average of isotropic
 // lobes of the minor width 2 c sigma whose axes are spread along the plane of incidence by a Gaussian of standard
 // deviation 2 sigma sqrt(1 - c^2) (the convolution of the two has the major width 2 sigma): K axes at equal steps
-// over +-3 standard deviations, Gaussian weights summing to 1, steps at most 1.5 times the minor width so the sum has
-// no visible ripple. K is capped at kMaxReflectedLobes; past the cap (c below ~0.27) the minor width is widened to
-// keep the steps at 1.5 widths and the spread narrowed so that the in-plane width stays 2 sigma.
+// over +-3 standard deviations, Gaussian weights summing to 1 (their variance is the spread's to 0.7% from K = 5),
+// steps at most 1.5 times the minor width so the sum has no visible ripple; K = 3 takes the 3-point Gauss-Hermite
+// rule (axes at 0 and +-sqrt(3) spreads, weights 2/3 and 1/6), whose variance is exact. Where the spread is at most
+// kIsotropicRatio of the minor width (c >= 0.995) one lobe of the mean variance is used. K is capped at
+// kMaxReflectedLobes; past the cap (c below ~0.27) the minor width is widened to keep the steps at 1.5 widths and the
+// spread narrowed so that the in-plane width stays 2 sigma. The model is first order in sigma: it is meant for
+// glossy lobes (sigma up to ~0.25); the spread is capped at kMaxSpread (pi / 6, so the outer axes stay within 90
+// degrees of the mirror direction) for broader ones, which it renders narrower than they are.
 //
 // The integrand's smooth factors (Fresnel, and the Jacobian's v.h in (v.h) / (n.v)) vary to first order across the
 // lobe in the plane of incidence: v.h = c cos(delta) + sin(theta_d) sin(delta) for a half-vector offset delta, a tilt
@@ -32,6 +37,8 @@
 namespace mbk {
 
 inline constexpr int kMaxReflectedLobes = 15;
+inline constexpr double kIsotropicRatio = 0.1;
+inline constexpr double kMaxSpread = 0.52359877559829887;  // pi / 6
 
 struct ReflectedLobes {
   int count = 0;

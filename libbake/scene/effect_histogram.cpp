@@ -6,11 +6,11 @@
 //   method         "exact"  the histogram technique's --method
 //   theta_bins     9        the histogram technique's --theta-bins
 //   phi_bins       32       the histogram technique's --phi-bins
-//   roughness      0.05     intrinsic roughness sigma of every normal's lobe, in (0, 1]
+//   roughness      0.05     intrinsic roughness sigma of every normal's lobe, radians, in [0.001, 1]
 //   roughness_map  (none)   an image whose first channel is sigma, relative to the scene file (overrides roughness)
 //   sh_order       20       SH order of the distant lighting the NDF is dotted with
 #include "libbake/histogram/histogram_asset.h"
-#include "libbake/histogram/roughness_zh_table.h"
+#include "libbake/histogram/roughness_lobe.h"
 #include "libbake/scene/effect_registry.h"
 #include "libbake/scene/technique_parameters.h"
 
@@ -38,7 +38,7 @@ std::vector<Parameter> histogram_parameters() {
   Parameter sh_order;
   sh_order.name = "sh_order";
   sh_order.min = 1;
-  sh_order.max = 128;
+  sh_order.max = 64;
   sh_order.default_value = 20;
   sh_order.doc = "SH order of the distant lighting the NDF is dotted with ([Shah24] Eq. 9)";
   return {scene_key(effect_parameter("histogram", "method", "method")),

@@ -54,7 +54,8 @@ TEST(BandRadianceGrid, LookupsMatchTheDirectSum) {
         if (i == 0) r = Vec3::UnitY();
         if (i == 1) r = -Vec3::UnitY();
         if (i == 2) r = Vec3(1, 0, -1e-17).normalized();  // phi just below 2 pi: the seam
-        worst = std::max(worst, (grid.lobe_radiance(r, lambda) - direct_sum(sh, basis, r, lambda)).cwiseAbs().maxCoeff());
+        worst =
+            std::max(worst, (grid.lobe_radiance(r, lambda) - direct_sum(sh, basis, r, lambda)).cwiseAbs().maxCoeff());
       }
       std::printf("[ info ] order %d, sigma %.4f: largest error %.3g, bound %.3g\n", order, sigma, worst, bound);
       EXPECT_LE(worst, bound + 1e-5) << order << " " << sigma;
