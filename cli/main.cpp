@@ -54,11 +54,12 @@ std::vector<CommandEntry> command_table() {
        make_vmf_command,
        {"microbake vmf bumps.png --lobes 3 --tolerance 1e-4 -o bumps_vmf.mbk"}},
       {"histogram",
-       "Bake a normal map's adaptive bins and per-bin integral images: the exact binned P-NDF of any footprint "
-       "(asset kind histogram; tables above 4 GiB are refused; --method neural is planned)",
+       "Bake a normal map's adaptive bins and its binned P-NDF of any footprint: a neural histogram trained on the CPU "
+       "(asset kind neural_histogram, the default) or exact per-bin integral images (asset kind histogram; tables "
+       "above 4 GiB are refused, the neural bake trains on one)",
        make_histogram_command,
-       {"microbake histogram bumps.png -o bumps_histogram.mbk",
-        "microbake histogram bumps.png --theta-bins 6 --phi-bins 16 -o bumps_histogram.mbk"}},
+       {"microbake histogram bumps.png --iterations 300 -o bumps_neural.mbk",
+        "microbake histogram bumps.png --method exact --theta-bins 6 --phi-bins 16 -o bumps_histogram.mbk"}},
       {"colormap",
        "Bake a colour map prefiltered with Gaussians, indexed by (mean, sigma) (asset kind colormap)",
        make_colormap_command,

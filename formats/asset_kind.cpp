@@ -6,9 +6,17 @@
 namespace mbk {
 
 std::span<const AssetKind> asset_kinds() {
-  static const std::vector<AssetKind> kKinds = {mip_kind(),   lut_kind(),      rmq_kind(),      sh_kind(),
-                                                vmf_kind(),   crease_kind(),   colormap_kind(), moments_kind(),
-                                                graph_kind(), histogram_kind()};
+  static const std::vector<AssetKind> kKinds = {mip_kind(),
+                                                lut_kind(),
+                                                rmq_kind(),
+                                                sh_kind(),
+                                                vmf_kind(),
+                                                crease_kind(),
+                                                colormap_kind(),
+                                                moments_kind(),
+                                                graph_kind(),
+                                                histogram_kind(),
+                                                neural_histogram_kind()};
   return kKinds;
 }
 

@@ -54,5 +54,6 @@ AssetKind moments_kind();
 AssetKind crease_kind();
 AssetKind graph_kind();
 AssetKind histogram_kind();
+AssetKind neural_histogram_kind();
 
 }  // namespace mbk

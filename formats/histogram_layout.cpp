@@ -40,6 +40,22 @@ uint32_t HistogramBins::bin_of(double x, double y, double z) const {
   return histogram_theta_bin(theta_edges, histogram_theta(x, y, z)) * phi_bins + histogram_phi_bin(x, y, phi_bins);
 }
 
+ThetaBinsCheck check_theta_bins(std::span<const double> edges, std::span<const double> centres) {
+  ThetaBinsCheck check;
+  check.edges_ok = edges.front() == 0.0 && edges.back() == kHistogramThetaMax;
+  for (size_t j = 0; j + 1 < edges.size(); ++j) check.edges_ok = check.edges_ok && edges[j] < edges[j + 1];  // NaN
+  if (!check.edges_ok) return check;
+  for (size_t j = 0; j < centres.size(); ++j) {
+    const bool inside = centres[j] >= edges[j] && centres[j] <= edges[j + 1];
+    const bool midpoint = j == 0 || edges[j] == 0.5 * (centres[j - 1] + centres[j]);
+    if (!inside || !midpoint) {
+      check.bad_centre = int64_t(j);
+      return check;
+    }
+  }
+  return check;
+}
+
 uint64_t histogram_table_entries(uint32_t width, uint32_t height, uint32_t bins) {
   return (uint64_t(width) + 1) * (uint64_t(height) + 1) * bins;
 }

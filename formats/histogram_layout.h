@@ -57,6 +57,16 @@ struct HistogramBins {
   uint32_t bin_of(double x, double y, double z) const;
 };
 
+// The invariants of stored theta bins (K >= 1, edges K + 1 values, centres K), shared by the validators of the
+// kinds that store them: the edges rise strictly from 0 to pi/2 (`edges_ok`); each centre lies in its bin and each
+// interior edge is the midpoint of its two centres (else `bad_centre` is the first centre that does not).
+struct ThetaBinsCheck {
+  bool edges_ok = true;
+  int64_t bad_centre = -1;
+  bool ok() const { return edges_ok && bad_centre < 0; }
+};
+ThetaBinsCheck check_theta_bins(std::span<const double> edges, std::span<const double> centres);
+
 // Entries and bytes of the table of a W x H map with `bins` bins.
 uint64_t histogram_table_entries(uint32_t width, uint32_t height, uint32_t bins);
 uint64_t histogram_table_bytes(uint32_t width, uint32_t height, uint32_t bins);

@@ -32,26 +32,22 @@ std::string shape_text(const std::vector<uint64_t>& shape) {
 
 // The theta edges (increasing from 0 to the maximum), the theta centres (inside their bins, the edges halfway
 // between them) and the phi edges (exactly histogram_phi_edge): true when all hold, else one finding.
-bool check_histogram_bins(const Asset& a, uint64_t K, uint64_t N, std::vector<Finding>& out) {
+bool check_histogram_bins(const Asset& a, uint64_t N, std::vector<Finding>& out) {
   const std::vector<double> edges = a.read<double>(kHistogramThetaEdgesSection);
   const std::vector<double> centres = a.read<double>(kHistogramThetaCentresSection);
   const std::vector<double> phi_edges = a.read<double>(kHistogramPhiEdgesSection);
-  bool edges_ok = edges.front() == 0.0 && edges.back() == kHistogramThetaMax;
-  for (size_t j = 0; j + 1 < edges.size(); ++j) edges_ok = edges_ok && edges[j] < edges[j + 1];  // false for NaN
-  if (!edges_ok) {
+  const ThetaBinsCheck check = check_theta_bins(edges, centres);
+  if (!check.edges_ok) {
     out.push_back(make_finding(msg::histogram_bad_theta_edges, "", {{"section", kHistogramThetaEdgesSection}}));
     return false;
   }
-  for (size_t j = 0; j < K; ++j) {
-    const bool inside = centres[j] >= edges[j] && centres[j] <= edges[j + 1];
-    const bool midpoint = j == 0 || edges[j] == 0.5 * (centres[j - 1] + centres[j]);
-    if (!inside || !midpoint) {
-      out.push_back(make_finding(msg::histogram_bad_theta_centres,
-                                 "centre " + number_text(j) + " = " + number_text(centres[j]) + ", bin [" +
-                                     number_text(edges[j]) + ", " + number_text(edges[j + 1]) + "]",
-                                 {{"section", kHistogramThetaCentresSection}, {"index", j}}));
-      return false;
-    }
+  if (check.bad_centre >= 0) {
+    const size_t j = size_t(check.bad_centre);
+    out.push_back(make_finding(msg::histogram_bad_theta_centres,
+                               "centre " + number_text(j) + " = " + number_text(centres[j]) + ", bin [" +
+                                   number_text(edges[j]) + ", " + number_text(edges[j + 1]) + "]",
+                               {{"section", kHistogramThetaCentresSection}, {"index", j}}));
+    return false;
   }
   for (uint32_t i = 0; i <= N; ++i)
     if (phi_edges[i] != histogram_phi_edge(i, uint32_t(N))) {
@@ -132,7 +128,7 @@ void check_histogram(const Asset& a, std::vector<Finding>& out) {
       return;
     }
   }
-  if (check_histogram_bins(a, K, N, out)) check_histogram_counts(a, W, H, B, out);
+  if (check_histogram_bins(a, N, out)) check_histogram_counts(a, W, H, B, out);
 }
 
 }  // namespace

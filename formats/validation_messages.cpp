@@ -123,6 +123,12 @@ std::span<const MessageInfo> all_messages() {
       histogram_border_not_zero,
       histogram_negative_count,
       histogram_count_not_area,
+      neural_histogram_bad_parameters,
+      neural_histogram_section_shape,
+      neural_histogram_bad_theta_edges,
+      neural_histogram_bad_theta_centres,
+      neural_histogram_bad_texel_bin,
+      neural_histogram_non_finite,
   };
   return kAll;
 }

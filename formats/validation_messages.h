@@ -219,6 +219,23 @@ inline constexpr MessageInfo histogram_negative_count{
     21007, Severity::error, "histogram: a footprint's corners give a negative count for a bin"};
 inline constexpr MessageInfo histogram_count_not_area{
     21008, Severity::error, "histogram: a footprint's bin counts do not sum to its area in texels"};
+// 22xxx: kind 12, `neural_histogram` (adaptive bins, a feature pyramid and MLPs: the neural binned P-NDF)
+inline constexpr MessageInfo neural_histogram_bad_parameters{
+    22001, Severity::error,
+    "neural_histogram: parameters missing or out of range (width, height, method, theta_bins, theta_bins_requested, "
+    "phi_bins, features, hidden, levels, min_footprint, iterations, batch, seed, training_seed)"};
+inline constexpr MessageInfo neural_histogram_section_shape{
+    22002, Severity::error, "neural_histogram: section type or shape does not match the parameters"};
+inline constexpr MessageInfo neural_histogram_bad_theta_edges{
+    22003, Severity::error, "neural_histogram: theta edges do not rise strictly from 0 to pi/2"};
+inline constexpr MessageInfo neural_histogram_bad_theta_centres{
+    22004, Severity::error,
+    "neural_histogram: a theta centre lies outside its bin, or an interior edge is not the midpoint of its two "
+    "centres"};
+inline constexpr MessageInfo neural_histogram_bad_texel_bin{
+    22005, Severity::error, "neural_histogram: a texel's bin index is not below theta_bins x phi_bins"};
+inline constexpr MessageInfo neural_histogram_non_finite{
+    22006, Severity::error, "neural_histogram: a feature or network parameter is not finite"};
 }  // namespace msg
 
 // All of the above, for documentation and the uniqueness test.

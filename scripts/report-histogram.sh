@@ -40,7 +40,7 @@ for s in "${scenes[@]}"; do
     info=$("$exe" info "$f" --format json)
     map=$(echo "$info" | jq -r '.metadata.inputs[0].path | split("/") | last')
     bins=$(echo "$info" | jq -r '.metadata.parameters | "\(.theta_bins) x \(.phi_bins)"')
-    secs=$(/usr/bin/time -f %e "$exe" histogram "$(echo "$info" | jq -r '.metadata.inputs[0].path')" \
+    secs=$(/usr/bin/time -f %e "$exe" histogram --method exact "$(echo "$info" | jq -r '.metadata.inputs[0].path')" \
       --convention "$(echo "$info" | jq -r '.metadata.inputs[0].convention')" -q -o "$work/timed.mbk" 2>&1 | tail -1)
     echo "| $s | $map | $bins | $(stat -c %s "$f") | $secs |"
   done

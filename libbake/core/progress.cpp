@@ -21,6 +21,7 @@ void Progress::start(const std::string& label, uint64_t total) {
   finish();
   std::lock_guard lock(draw_mutex_);
   label_ = label;
+  note_.clear();
   total_ = total;
   done_ = 0;
   started_ = std::chrono::steady_clock::now();
@@ -30,6 +31,12 @@ void Progress::start(const std::string& label, uint64_t total) {
 void Progress::advance(uint64_t units) {
   done_.fetch_add(units, std::memory_order_relaxed);
   if (enabled_) draw(false);
+}
+
+void Progress::note(const std::string& text) {
+  if (!enabled_) return;
+  std::lock_guard lock(draw_mutex_);
+  note_ = text;
 }
 
 void Progress::finish() {
@@ -52,8 +59,9 @@ void Progress::draw(bool force) {
   const double frac = total_ ? double(done) / double(total_) : 1.0;
   const int width = 30, filled = int(frac * width);
   const double elapsed = std::chrono::duration<double>(now - started_).count();
-  std::fprintf(stderr, "\r%s [%.*s%*s] %3d%% %.1fs", label_.c_str(), filled,
-               "==============================", width - filled, "", int(frac * 100.0), elapsed);
+  std::fprintf(stderr, "\r%s [%.*s%*s] %3d%% %.1fs%s%s", label_.c_str(), filled,
+               "==============================", width - filled, "", int(frac * 100.0), elapsed,
+               note_.empty() ? "" : " ", note_.c_str());
   std::fflush(stderr);
   drawn_ = true;
 }

@@ -23,6 +23,8 @@ class Progress {
   // Starts a new task of `total` units (ends the previous one).
   void start(const std::string& label, uint64_t total);
   void advance(uint64_t units = 1);
+  // A short text shown after the bar until the task ends (e.g. a training loss).
+  void note(const std::string& text);
   // Ends the current task (clears the bar line).
   void finish();
 
@@ -32,7 +34,7 @@ class Progress {
  private:
   void draw(bool force);
   bool enabled_;
-  std::string label_;
+  std::string label_, note_;
   uint64_t total_ = 0;
   std::atomic<uint64_t> done_{0};
   std::mutex draw_mutex_;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace mbk {
 
@@ -17,6 +18,13 @@ FootprintTexels square_footprint_texels(const SquareFootprint& f) {
   t.x0 = int64_t(std::floor(f.x - half + 0.5));
   t.row0 = int64_t(std::floor(f.y - half + 0.5));
   return t;
+}
+
+SquareFootprint whole_map_footprint(uint32_t width, uint32_t height) {
+  SquareFootprint f;
+  f.side = double(std::lcm(uint64_t(width), uint64_t(height)));
+  f.x = f.y = 0.5 * f.side;
+  return f;
 }
 
 void ExactBinnedNdf::footprint_probabilities(const SquareFootprint& f, std::span<double> out) const {

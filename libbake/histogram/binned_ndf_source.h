@@ -31,6 +31,10 @@ struct FootprintTexels {
 };
 FootprintTexels square_footprint_texels(const SquareFootprint& f);
 
+// A square that covers a W x H map a whole number of times in both directions (side lcm(W, H)), whose
+// probabilities are the whole map's histogram (up to the 2^24 clamp of sides, for maps whose lcm is above it).
+SquareFootprint whole_map_footprint(uint32_t width, uint32_t height);
+
 class BinnedNdfSource {
  public:
   virtual ~BinnedNdfSource() = default;

@@ -41,7 +41,12 @@ std::vector<Parameter> histogram_parameters() {
   sh_order.max = 64;
   sh_order.default_value = 20;
   sh_order.doc = "SH order of the distant lighting the NDF is dotted with ([Shah24] Eq. 9)";
-  return {scene_key(effect_parameter("histogram", "method", "method")),
+  // The effect shades from exact assets (libbake/eval/histogram_effect.h), so its method key stays exact, narrower
+  // than the command's, whose default is neural.
+  Parameter method = scene_key(effect_parameter("histogram", "method", "method"));
+  method.choices = {"exact"};
+  method.default_value = "exact";
+  return {method,
           scene_key(effect_parameter("histogram", "theta_bins", "theta_bins")),
           scene_key(effect_parameter("histogram", "phi_bins", "phi_bins")),
           roughness,

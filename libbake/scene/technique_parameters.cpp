@@ -109,14 +109,23 @@ std::vector<TechniqueSchema> declare_schemas() {
        {level, command_line_only(integer("seed", 0, kAnyUint32, 1, "Jitter hash seed")),
         command_line_only(integer("passes", 1, 8, 2, "Correction passes per level (4 sub-passes each)"))}},
       {"histogram",
-       {command_line_only(choice("method", {"exact"}, "exact",
-                                 "How the binned P-NDF is stored: exact, integral images of per-bin counts ([GGN18]); "
-                                 "neural ([Shah24] Sec. 4.2) is planned and not accepted yet")),
+       {command_line_only(choice("method", {"neural", "exact"}, "neural",
+                                 "How the binned P-NDF is stored: neural, a feature pyramid and small MLPs trained "
+                                 "on the CPU ([Shah24] Sec. 4.2); exact, integral images of per-bin counts ([GGN18])")),
         command_line_only(integer("theta_bins", 1, kHistogramMaxThetaBins, kHistogramDefaultThetaBins,
                                   "Adaptive theta bins requested, K (1-D k-means centres; fewer when the map has "
                                   "fewer distinct theta values)")),
         command_line_only(
-            integer("phi_bins", 1, kHistogramMaxPhiBins, kHistogramDefaultPhiBins, "Uniform phi bins, N"))}},
+            integer("phi_bins", 1, kHistogramMaxPhiBins, kHistogramDefaultPhiBins, "Uniform phi bins, N")),
+        command_line_only(integer("features", 1, kNeuralHistogramMaxFeatures, kNeuralHistogramDefaultFeatures,
+                                  "Neural: features per texel of the feature pyramid, F")),
+        command_line_only(integer("iterations", 1, kNeuralHistogramMaxIterations, kNeuralHistogramDefaultIterations,
+                                  "Neural: training iterations (Adam steps)")),
+        command_line_only(integer("batch", 1, kNeuralHistogramMaxBatch, kNeuralHistogramDefaultBatch,
+                                  "Neural: random footprints per training iteration")),
+        command_line_only(integer("seed", 0, kAnyUint32, 1,
+                                  "Neural: training seed (initial weights and footprints; with the input's content "
+                                  "hash)"))}},
   };
 }
 
@@ -164,6 +173,16 @@ VmfBakeOptions vmf_bake_options(const nlohmann::json& parameters) {
 
 HistogramBakeOptions histogram_bake_options(const nlohmann::json& parameters) {
   return {parameters.at("theta_bins").get<uint32_t>(), parameters.at("phi_bins").get<uint32_t>()};
+}
+
+NeuralHistogramBakeOptions neural_histogram_bake_options(const nlohmann::json& parameters) {
+  NeuralHistogramBakeOptions options;
+  options.bins = histogram_bake_options(parameters);
+  options.features = parameters.at("features").get<uint32_t>();
+  options.iterations = parameters.at("iterations").get<uint32_t>();
+  options.batch = parameters.at("batch").get<uint32_t>();
+  options.seed = parameters.at("seed").get<uint64_t>();
+  return options;
 }
 
 CreaseBakeOptions crease_bake_options(const nlohmann::json& parameters) {

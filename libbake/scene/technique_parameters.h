@@ -13,6 +13,7 @@
 #include "libbake/filter/sh_asset.h"
 #include "libbake/filter/vmf_pyramid.h"
 #include "libbake/histogram/histogram_bake.h"
+#include "libbake/histogram/neural_histogram_bake.h"
 #include "libbake/scene/parameter_schema.h"
 
 namespace mbk {
@@ -31,5 +32,6 @@ ShBakeOptions sh_bake_options(const nlohmann::json& parameters);
 VmfBakeOptions vmf_bake_options(const nlohmann::json& parameters);
 CreaseBakeOptions crease_bake_options(const nlohmann::json& parameters);
 HistogramBakeOptions histogram_bake_options(const nlohmann::json& parameters);
+NeuralHistogramBakeOptions neural_histogram_bake_options(const nlohmann::json& parameters);
 
 }  // namespace mbk

@@ -60,7 +60,8 @@ class Corpus {
         {"lut", "bumps.png", "-q", "-o", "valid.lut.mbk"},
         {"rmq", "bumps.png", "--patch", "4", "-q", "-o", "valid.rmq.mbk"},
         {"moments", "bumps.png", "-q", "-o", "valid.moments.mbk"},
-        {"histogram", "bumps.png", "-q", "-o", "valid.histogram.mbk"},
+        {"histogram", "bumps.png", "--method", "exact", "-q", "-o", "valid.histogram.mbk"},
+        {"histogram", "bumps.png", "--iterations", "20", "--batch", "64", "-q", "-o", "valid.neural_histogram.mbk"},
         {"colormap", "stripes.json", "--size", "16x8", "-q", "-o", "valid.colormap.mbk"},
         {"crease", "panels.png", "--curves", "panels.json", "-q", "-o", "valid.crease.mbk"},
         {"graph", "graph.json", "-q", "-o", "valid.graph.mbk"},
@@ -94,7 +95,8 @@ const Corpus& corpus() {
 
 // --- assets --------------------------------------------------------------------------------------------------
 
-const char* const kKinds[] = {"mip", "sh", "vmf", "lut", "rmq", "moments", "colormap", "crease", "graph", "histogram"};
+const char* const kKinds[] = {
+    "mip", "sh", "vmf", "lut", "rmq", "moments", "colormap", "crease", "graph", "histogram", "neural_histogram"};
 
 // `f` with metadata parameters[key] set to `value`, resealed. The producer's name is shortened to make room, since
 // the metadata block cannot grow.

@@ -18,6 +18,7 @@
 #include "tests/formats/histogram_fixtures.h"
 #include "tests/formats/lut_fixtures.h"
 #include "tests/formats/moments_fixtures.h"
+#include "tests/formats/neural_histogram_fixtures.h"
 #include "tests/formats/rmq_fixtures.h"
 #include "tests/formats/sh_fixtures.h"
 #include "tests/formats/vmf_fixtures.h"
@@ -436,6 +437,31 @@ std::vector<CorruptCase> corrupt_cases() {
       // Texel (0, 0)'s footprint counts bins 0 and 2: two texels in a one-texel footprint.
       {"HistogramCountsNotTheArea", 21008,
        [] { return test::histogram_with([](test::HistogramFixture& f) { f.count(1, 1, 2) = 1; }); }},
+      {"NeuralHistogramMethodExact", 22001,
+       [] {
+         return test::neural_histogram_with([](test::NeuralHistogramFixture& f) { f.parameters["method"] = "exact"; });
+       }},
+      {"NeuralHistogramLevelsWrong", 22001,
+       [] { return test::neural_histogram_with([](test::NeuralHistogramFixture& f) { f.parameters["levels"] = 2; }); }},
+      {"NeuralHistogramShapeDisagreesWithWidth", 22002,
+       [] { return test::neural_histogram_with([](test::NeuralHistogramFixture& f) { f.parameters["width"] = 4; }); }},
+      {"NeuralHistogramMlpTooShort", 22002,
+       [] { return test::neural_histogram_with([](test::NeuralHistogramFixture& f) { f.mlp.pop_back(); }); }},
+      {"NeuralHistogramThetaEdgesEndBelowTheHorizon", 22003,
+       [] { return test::neural_histogram_with([](test::NeuralHistogramFixture& f) { f.theta_edges[2] = 1.5; }); }},
+      {"NeuralHistogramThetaEdgeNotTheMidpoint", 22004,
+       [] { return test::neural_histogram_with([](test::NeuralHistogramFixture& f) { f.theta_centres[0] = 0.3; }); }},
+      {"NeuralHistogramTexelBinOutOfRange", 22005,
+       [] { return test::neural_histogram_with([](test::NeuralHistogramFixture& f) { f.texel_bins[4] = 4; }); }},
+      {"NeuralHistogramInfiniteFeature", 22006,
+       [] {
+         return test::neural_histogram_with(
+             [](test::NeuralHistogramFixture& f) { f.features[1] = Imath::half::posInf(); });
+       }},
+      {"NeuralHistogramNaNWeight", 22006,
+       [] {
+         return test::neural_histogram_with([](test::NeuralHistogramFixture& f) { f.mlp[50] = Imath::half::qNan(); });
+       }},
       {"CreaseZeroWidth", 16001,
        [] {
          return test::crease_bytes({}, {{"width", 0}, {"height", 2}});

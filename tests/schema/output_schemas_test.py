@@ -156,7 +156,7 @@ def exercise(t):
         "rmq": ["rmq", "bumps.png", "--patch", "8", "-o", "rmq.mbk"],
         "sh": ["sh", "bumps.png", "--order", "4", "-o", "sh.mbk"],
         "vmf": ["vmf", "bumps.png", "--lobes", "2", "-o", "vmf.mbk"],
-        "histogram": ["histogram", "bumps.png", "-o", "histogram.mbk"],
+        "histogram": ["histogram", "bumps.png", "--iterations", "20", "--batch", "64", "-o", "histogram.mbk"],
         "colormap": ["colormap", "terrain.json", "--size", "16x4", "-o", "colormap.mbk"],
         "moments": ["moments", "bumps.png", "--channel", "2", "-o", "moments.mbk"],
         "crease": ["crease", "panels.png", "--curves", "panels.json", "-o", "crease.mbk"],

@@ -23,7 +23,7 @@ ELEMENT_TYPES = {1: ("u8", 1), 2: ("i8", 1), 3: ("u16", 2), 4: ("i16", 2), 5: ("
 
 # SPEC section 7: kind id -> name, and the sections every file of the kind holds with their allowed types.
 KINDS = {1: "mip", 3: "rmq", 4: "sh", 5: "vmf", 6: "crease", 7: "colormap", 8: "moments", 9: "graph", 10: "lut",
-         11: "histogram"}
+         11: "histogram", 12: "neural_histogram"}
 REQUIRED_SECTIONS = {
     "mip": {"level_0": ("f32",)},
     "lut": {"knots_n_x": ("f32",), "knots_n_y": ("f32",)},
@@ -38,6 +38,8 @@ REQUIRED_SECTIONS = {
               "synthesis_pca_basis": ("f32",)},
     "histogram": {"theta_edges": ("f64",), "theta_centres": ("f64",), "phi_edges": ("f64",),
                   "bin_counts": ("u32",)},
+    "neural_histogram": {"theta_edges": ("f64",), "theta_centres": ("f64",), "texel_bins": ("u16",),
+                         "features": ("f16",), "mlp": ("f16",)},
 }
 
 SECTION_NAME = re.compile(r"[a-z][a-z0-9_.-]{0,30}\Z")
