@@ -10,13 +10,12 @@ namespace mbk {
 
 class AdamOptimizer {
  public:
-  AdamOptimizer(size_t parameters, float learning_rate) : m_(parameters), v_(parameters), rate_(learning_rate) {}
-  // One step of the parameters against `gradient` (the same length).
-  void step(std::span<float> parameters, std::span<const float> gradient);
+  explicit AdamOptimizer(size_t parameters) : m_(parameters), v_(parameters) {}
+  // One step of the parameters against `gradient` (the same length) with step size `learning_rate` (alpha).
+  void step(std::span<float> parameters, std::span<const float> gradient, double learning_rate);
 
  private:
   std::vector<float> m_, v_;  // first and second moment estimates
-  float rate_;
   uint64_t steps_ = 0;
 };
 

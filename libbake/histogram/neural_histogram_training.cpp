@@ -12,8 +12,11 @@
 namespace mbk {
 namespace {
 
-// [Shah24] Sec. 5: 10^-3 for the weights and the features alike.
-constexpr float kLearningRate = 1e-3f;
+// Adam's step sizes at the first iteration, decaying exponentially to a tenth at the last. [Shah24] Sec. 5 uses
+// 10^-3 for both over 20k batches of 2^18 footprints; our batches are 512 times smaller and our budget a few
+// minutes, and larger steps learn much faster there (a 512^2 map, 4000 batches of 512: held-out KL 0.344 with
+// these, 0.355 with 10^-2 and 10^-3, against 0.839 for the whole map's histogram; 1000 batches at 10^-3: 0.553).
+constexpr double kFeatureLearningRate = 3e-2, kNetworkLearningRate = 3e-3, kFinalLearningRateFactor = 0.1;
 
 double uniform01(std::mt19937_64& random) { return double(random() >> 11) * 0x1p-53; }
 
@@ -147,7 +150,7 @@ NeuralTrainingOutcome train_neural_histogram(const NeuralHistogramShape& shape, 
   std::mt19937_64 random(options.seed);
   NeuralTrainingOutcome outcome{initial_neural_histogram(shape, exact, random), 0.0};
   NeuralHistogramModel& model = outcome.model;
-  AdamOptimizer mlp_adam(model.mlp.size(), kLearningRate), feature_adam(model.features.size(), kLearningRate);
+  AdamOptimizer mlp_adam(model.mlp.size()), feature_adam(model.features.size());
   const uint32_t chunks = (options.batch + kNeuralTrainingChunk - 1) / kNeuralTrainingChunk;
   std::vector<ChunkGradient> work(chunks);
   std::vector<SquareFootprint> batch(options.batch);
@@ -173,8 +176,9 @@ NeuralTrainingOutcome train_neural_histogram(const NeuralHistogramShape& shape, 
     const float scale = 1.0f / float(options.batch);  // the mean over the batch
     for (float& g : mlp_gradient) g *= scale;
     for (float& g : feature_gradient) g *= scale;
-    mlp_adam.step(model.mlp, mlp_gradient);
-    feature_adam.step(model.features, feature_gradient);
+    const double decay = std::pow(kFinalLearningRateFactor, double(iteration) / double(options.iterations));
+    mlp_adam.step(model.mlp, mlp_gradient, kNetworkLearningRate * decay);
+    feature_adam.step(model.features, feature_gradient, kFeatureLearningRate * decay);
     loss /= options.batch;
     if (iteration + tail >= options.iterations) tail_loss += loss;
     shown_loss = shown_loss < 0.0 ? loss : 0.98 * shown_loss + 0.02 * loss;

@@ -1,7 +1,8 @@
-// Training the neural histogram on the CPU ([Shah24] Sec. 5): Adam on the KL divergence D_KL(exact || predicted)
-// over batches of random square footprints, centre uniform on the map and side S x with x ~ lambda e^(-lambda x),
-// lambda = 16, S the map's longer side, clamped to [8, max(8, S)]; the exact histograms come from the exact source
-// (the integral images of bin_count_table.h, the same code as the `histogram` asset). Eq. 11 splits the loss:
+// Training the neural histogram on the CPU ([Shah24] Sec. 5): Adam ([KB14]; step sizes in the .cpp) on the KL
+// divergence D_KL(exact || predicted) over batches of random square footprints, centre uniform on the map and side
+// S x with x ~ lambda e^(-lambda x), lambda = 16, S the map's longer side, clamped to [8, max(8, S)]; the exact
+// histograms come from the exact source (the integral images of bin_count_table.h, the same code as the `histogram`
+// asset). Eq. 11 splits the loss:
 //   D_KL = sum_j p_j ln(p_j / q_j) + sum_j p_j sum_i p_i|j ln(p_i|j / q_i|j),
 // so the theta network learns from every footprint and the phi network of bin j from those with p_j > 0, weighted
 // by p_j. Forward and backward passes are hand-written (histogram_mlp.h), features receive the inputs' gradients
