@@ -41,8 +41,8 @@ std::vector<Parameter> histogram_parameters() {
   sh_order.max = 64;
   sh_order.default_value = 20;
   sh_order.doc = "SH order of the distant lighting the NDF is dotted with ([Shah24] Eq. 9)";
-  // The effect shades from exact assets (libbake/eval/histogram_effect.h), so its method key stays exact, narrower
-  // than the command's, whose default is neural.
+  // The effect shades from exact assets (libbake/eval/histogram_effect.h): its method key is narrower than the
+  // command's, whose default is neural.
   Parameter method = scene_key(effect_parameter("histogram", "method", "method"));
   method.choices = {"exact"};
   method.default_value = "exact";
