@@ -1,7 +1,7 @@
-// `microbake histogram INPUT -o OUT.mbk [--method exact] [--theta-bins K] [--phi-bins N]`: bakes a normal map's
-// adaptive bins and the integral images of its per-bin counts, the exact binned P-NDF of any footprint (asset kind
-// `histogram`, libbake/histogram/histogram_bake.h; [Shah24] Sec. 4.1, [GGN18]). The neural form ([Shah24] Sec. 4.2)
-// is planned; --method accepts only exact until it lands.
+// `microbake histogram INPUT -o OUT.mbk [--method exact] [--theta-bins K] [--phi-bins N] [--theta-binning B]`: bakes a
+// normal map's adaptive (or uniform) bins and the integral images of its per-bin counts, the exact binned P-NDF of any
+// footprint (asset kind `histogram`, libbake/histogram/histogram_bake.h; [Shah24] Sec. 4.1, [GGN18]). The neural form
+// ([Shah24] Sec. 4.2) is planned; --method accepts only exact until it lands.
 #include <iomanip>
 #include <sstream>
 
@@ -29,6 +29,7 @@ class HistogramCommand : public NormalMapBakingCommand {
   std::string summary() const override {
     std::ostringstream s;
     s << map_size() << ", " << bins_.theta_bins() << " x " << bins_.phi_bins << " bins";
+    if (options_.theta_binning == ThetaBinning::uniform) s << " (uniform theta)";
     if (bins_.theta_bins() < options_.theta_bins)
       s << " (" << options_.theta_bins << " theta bins requested, " << distinct_ << " distinct theta values)";
     s << ", exact, " << asset_->file_size() << " bytes";

@@ -203,7 +203,7 @@ inline constexpr MessageInfo graph_bad_pca{19006, Severity::error,
 inline constexpr MessageInfo histogram_bad_parameters{
     21001, Severity::error,
     "histogram: parameters missing or out of range (width, height, theta_bins, theta_bins_requested, phi_bins, "
-    "method)"};
+    "method, theta_binning)"};
 inline constexpr MessageInfo histogram_section_shape{21002, Severity::error,
                                                      "histogram: section type or shape does not match the parameters"};
 inline constexpr MessageInfo histogram_bad_theta_edges{21003, Severity::error,

@@ -5,8 +5,9 @@
 # RAYS x RAYS rays (two seeds: the floor) and plain normal mapping, copies the pictures (effect | reference | plain,
 # one strip per scene) into examples/results/histogram/, and prints Markdown tables: bake time and asset bytes per map; render time and block
 # L1 (relative L1 of 8 x 8 block means against the reference) of the effect and of plain normal mapping beside the
-# floor; the same per light; and the environment alone at SH orders 10, 20, 40 and 60 (time and error), so the
-# order's cost and accuracy read side by side.
+# floor; the same per light; the environment alone at SH orders 10, 20, 40 and 60 (time and error), so the
+# order's cost and accuracy read side by side; and each variant of the bins and storage (adaptive or uniform theta
+# bins, [Shah24] Fig. 3) with its bake time, bytes and error against the same reference.
 #
 #   bash scripts/report-histogram.sh [BUILD_DIR] [RAYS]     # default build/ (a Release build), RAYS = 16
 set -euo pipefail
@@ -23,6 +24,8 @@ mkdir -p "$out"
 seconds() { sed -n 's/^rendered .*, \([0-9.]*\) s$/\1/p' | head -1; }
 block_l1() { "$exe" compare "$1" "$2" --block 8 --format json | jq -r '.block_relative_l1 * 10000 | round / 10000'; }
 
+# Variants of every histogram effect of a scene for the bins-and-storage table: name=JSON merged into the effect.
+variants=('adaptive={"theta_binning": "adaptive"}' 'uniform={"theta_binning": "uniform"}')
 scenes=(histogram)
 [ -f ../shared/data/real/brushed_streaks_diagonal.png ] && scenes+=(histogram_real)
 for s in "${scenes[@]}"; do
@@ -83,5 +86,26 @@ for s in "${scenes[@]}"; do
     t=$("$exe" render "$d/order.json" --assets "$work/$s/assets" -o "$d/order$order.exr" | seconds)
     e=$(block_l1 "$d/order$order.exr" "$d/reference.exr")
     echo "| $s | $order | $t | $e | $f | $(echo "scale=1; $e / $f" | bc) |"
+  done
+done
+echo
+echo "Bins and storage, full resolution, against the same reference (bake: every histogram asset of the scene,"
+echo "bytes: their sum):"
+echo
+echo "| scene | variant | bake (s) | asset bytes | effect render (s) | effect block L1 | floor | effect / floor |"
+echo "|---|---|---|---|---|---|---|---|"
+for s in "${scenes[@]}"; do
+  d="$work/$s"
+  f=$(block_l1 "$d/histogram_reference_seed1.exr" "$d/histogram_reference.exr")
+  for variant in "${variants[@]}"; do
+    name=${variant%%=*}
+    v="$d/variant_$name"
+    mkdir -p "$v"
+    jq "(.materials[].effects[]? | select(.name == \"histogram\")) += ${variant#*=}" "$d/scene.json" >"$v/scene.json"
+    b=$(/usr/bin/time -f %e "$exe" bake "$v/scene.json" --out-dir "$v/assets" -q 2>&1 | tail -1)
+    bytes=$(cat "$v"/assets/*.mbk | wc -c)
+    t=$("$exe" render "$v/scene.json" --assets "$v/assets" -o "$v/effect.exr" | seconds)
+    e=$(block_l1 "$v/effect.exr" "$d/histogram_reference.exr")
+    echo "| $s | $name | $b | $bytes | $t | $e | $f | $(echo "scale=1; $e / $f" | bc) |"
   done
 done

@@ -116,7 +116,10 @@ std::vector<TechniqueSchema> declare_schemas() {
                                   "Adaptive theta bins requested, K (1-D k-means centres; fewer when the map has "
                                   "fewer distinct theta values)")),
         command_line_only(
-            integer("phi_bins", 1, kHistogramMaxPhiBins, kHistogramDefaultPhiBins, "Uniform phi bins, N"))}},
+            integer("phi_bins", 1, kHistogramMaxPhiBins, kHistogramDefaultPhiBins, "Uniform phi bins, N")),
+        command_line_only(choice("theta_binning", {"adaptive", "uniform"}, "adaptive",
+                                 "Theta bin centres: adaptive (1-D k-means of the map's normals, [Shah24] Sec. 4.1) "
+                                 "or uniform (equal widths, the baseline of [Shah24] Fig. 3)"))}},
   };
 }
 
@@ -163,7 +166,8 @@ VmfBakeOptions vmf_bake_options(const nlohmann::json& parameters) {
 }
 
 HistogramBakeOptions histogram_bake_options(const nlohmann::json& parameters) {
-  return {parameters.at("theta_bins").get<uint32_t>(), parameters.at("phi_bins").get<uint32_t>()};
+  return {parameters.at("theta_bins").get<uint32_t>(), parameters.at("phi_bins").get<uint32_t>(),
+          parameters.at("theta_binning") == "uniform" ? ThetaBinning::uniform : ThetaBinning::adaptive};
 }
 
 CreaseBakeOptions crease_bake_options(const nlohmann::json& parameters) {
