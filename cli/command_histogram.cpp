@@ -1,5 +1,6 @@
-// `microbake histogram INPUT -o OUT.mbk [--method neural|exact] [--theta-bins K] [--phi-bins N] [--features F]
-// [--iterations I] [--batch B] [--seed S]`: bakes a normal map's adaptive bins ([Shah24] Sec. 4.1) and either the
+// `microbake histogram INPUT -o OUT.mbk [--method neural|exact] [--theta-bins K] [--phi-bins N] [--theta-binning B]
+// [--features F] [--iterations I] [--batch B] [--seed S]`: bakes a normal map's adaptive (or uniform) bins
+// ([Shah24] Sec. 4.1) and either the
 // neural histogram (the default: a feature pyramid and small MLPs trained on the CPU, asset kind
 // `neural_histogram`, libbake/histogram/neural_histogram_bake.h; [Shah24] Sec. 4.2) or the integral images of its
 // per-bin counts, the exact binned P-NDF of any footprint (asset kind `histogram`,
@@ -41,6 +42,7 @@ class HistogramCommand : public NormalMapBakingCommand {
   std::string summary() const override {
     std::ostringstream s;
     s << map_size() << ", " << bins_.theta_bins() << " x " << bins_.phi_bins << " bins";
+    if (options_.bins.theta_binning == ThetaBinning::uniform) s << " (uniform theta)";
     if (bins_.theta_bins() < options_.bins.theta_bins)
       s << " (" << options_.bins.theta_bins << " theta bins requested, " << distinct_ << " distinct theta values)";
     if (neural_)

@@ -107,7 +107,8 @@ void check_histogram(const Asset& a, std::vector<Finding>& out) {
       !unsigned_in(p, "height", 1, kHistogramMaxSide) || !unsigned_in(p, "theta_bins", 1, kHistogramMaxThetaBins) ||
       !unsigned_in(p, "theta_bins_requested", 1, kHistogramMaxThetaBins) ||
       !unsigned_in(p, "phi_bins", 1, kHistogramMaxPhiBins) || !p.contains("method") || p["method"] != "exact" ||
-      p["theta_bins"].get<uint64_t>() > p["theta_bins_requested"].get<uint64_t>()) {
+      p["theta_bins"].get<uint64_t>() > p["theta_bins_requested"].get<uint64_t>() ||
+      (p.contains("theta_binning") && p["theta_binning"] != "adaptive" && p["theta_binning"] != "uniform")) {
     out.push_back(make_finding(msg::histogram_bad_parameters, "see parameters", {{"key", "parameters"}}));
     return;
   }
@@ -137,7 +138,9 @@ AssetKind histogram_kind() {
   AssetKind k;
   k.id = kHistogramKindId;
   k.name = "histogram";
-  k.summary = "adaptive theta x uniform phi bins of a normal map and integral images of per-bin counts (exact P-NDF)";
+  k.summary =
+      "theta x phi bins of a normal map (adaptive or uniform theta) and integral images of per-bin counts (exact "
+      "P-NDF)";
   k.required_sections = {{kHistogramThetaEdgesSection, {ElementType::f64}, 1},
                          {kHistogramThetaCentresSection, {ElementType::f64}, 1},
                          {kHistogramPhiEdgesSection, {ElementType::f64}, 1},

@@ -38,7 +38,8 @@ bool parameters_ok(const nlohmann::json& p) {
       !unsigned_in(p, "min_footprint", kNeuralHistogramMinFootprint, kNeuralHistogramMinFootprint) ||
       !unsigned_in(p, "iterations", 1, kAny) || !unsigned_in(p, "batch", 1, kAny) || !unsigned_in(p, "seed", 0, kAny) ||
       !unsigned_in(p, "training_seed", 0, kAny) || !p.contains("method") || p["method"] != "neural" ||
-      p["theta_bins"].get<uint64_t>() > p["theta_bins_requested"].get<uint64_t>())
+      p["theta_bins"].get<uint64_t>() > p["theta_bins_requested"].get<uint64_t>() ||
+      (p.contains("theta_binning") && p["theta_binning"] != "adaptive" && p["theta_binning"] != "uniform"))
     return false;
   const NeuralHistogramShape shape{p["width"].get<uint32_t>(),      p["height"].get<uint32_t>(),
                                    p["theta_bins"].get<uint32_t>(), p["phi_bins"].get<uint32_t>(),

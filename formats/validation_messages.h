@@ -203,7 +203,7 @@ inline constexpr MessageInfo graph_bad_pca{19006, Severity::error,
 inline constexpr MessageInfo histogram_bad_parameters{
     21001, Severity::error,
     "histogram: parameters missing or out of range (width, height, theta_bins, theta_bins_requested, phi_bins, "
-    "method)"};
+    "method, theta_binning)"};
 inline constexpr MessageInfo histogram_section_shape{21002, Severity::error,
                                                      "histogram: section type or shape does not match the parameters"};
 inline constexpr MessageInfo histogram_bad_theta_edges{21003, Severity::error,
@@ -223,7 +223,7 @@ inline constexpr MessageInfo histogram_count_not_area{
 inline constexpr MessageInfo neural_histogram_bad_parameters{
     22001, Severity::error,
     "neural_histogram: parameters missing or out of range (width, height, method, theta_bins, theta_bins_requested, "
-    "phi_bins, features, hidden, levels, min_footprint, iterations, batch, seed, training_seed)"};
+    "phi_bins, theta_binning, features, hidden, levels, min_footprint, iterations, batch, seed, training_seed)"};
 inline constexpr MessageInfo neural_histogram_section_shape{
     22002, Severity::error, "neural_histogram: section type or shape does not match the parameters"};
 inline constexpr MessageInfo neural_histogram_bad_theta_edges{

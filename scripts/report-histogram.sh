@@ -5,8 +5,9 @@
 # RAYS x RAYS rays (two seeds: the floor) and plain normal mapping, copies the pictures (effect | reference | plain,
 # one strip per scene) into examples/results/histogram/, and prints Markdown tables: bake time and asset bytes per map; render time and block
 # L1 (relative L1 of 8 x 8 block means against the reference) of the effect and of plain normal mapping beside the
-# floor; the same per light; and the environment alone at SH orders 10, 20, 40 and 60 (time and error), so the
-# order's cost and accuracy read side by side.
+# floor; the same per light; the environment alone at SH orders 10, 20, 40 and 60 (time and error), so the
+# order's cost and accuracy read side by side; and each variant of the bins and storage (adaptive or uniform theta
+# bins, [Shah24] Fig. 3) with its bake time, bytes and error against the same reference.
 #
 #   bash scripts/report-histogram.sh [BUILD_DIR] [RAYS]     # default build/ (a Release build), RAYS = 16
 set -euo pipefail
@@ -23,6 +24,9 @@ mkdir -p "$out"
 seconds() { sed -n 's/^rendered .*, \([0-9.]*\) s$/\1/p' | head -1; }
 block_l1() { "$exe" compare "$1" "$2" --block 8 --format json | jq -r '.block_relative_l1 * 10000 | round / 10000'; }
 
+# Variants of every histogram effect of a scene for the bins-and-storage table: name=JSON merged into the effect.
+variants=('adaptive={"theta_binning": "adaptive"}' 'uniform={"theta_binning": "uniform"}')
+methods=(exact)  # the histogram's storage in the map-size table
 scenes=(histogram)
 [ -f ../shared/data/real/brushed_streaks_diagonal.png ] && scenes+=(histogram_real)
 for s in "${scenes[@]}"; do
@@ -84,4 +88,64 @@ for s in "${scenes[@]}"; do
     e=$(block_l1 "$d/order$order.exr" "$d/reference.exr")
     echo "| $s | $order | $t | $e | $f | $(echo "scale=1; $e / $f" | bc) |"
   done
+done
+echo
+echo "Bins and storage, full resolution, against the same reference (bake: every histogram asset of the scene,"
+echo "bytes: their sum):"
+echo
+echo "| scene | variant | bake (s) | asset bytes | effect render (s) | effect block L1 | floor | effect / floor |"
+echo "|---|---|---|---|---|---|---|---|"
+for s in "${scenes[@]}"; do
+  d="$work/$s"
+  f=$(block_l1 "$d/histogram_reference_seed1.exr" "$d/histogram_reference.exr")
+  for variant in "${variants[@]}"; do
+    name=${variant%%=*}
+    v="$d/variant_$name"
+    mkdir -p "$v"
+    jq "(.materials[].effects[]? | select(.name == \"histogram\")) += ${variant#*=}" "$d/scene.json" >"$v/scene.json"
+    b=$(/usr/bin/time -f %e "$exe" bake "$v/scene.json" --out-dir "$v/assets" -q 2>&1 | tail -1)
+    bytes=$(cat "$v"/assets/*.mbk | wc -c)
+    t=$("$exe" render "$v/scene.json" --assets "$v/assets" -o "$v/effect.exr" | seconds)
+    e=$(block_l1 "$v/effect.exr" "$d/histogram_reference.exr")
+    echo "| $s | $name | $b | $bytes | $t | $e | $f | $(echo "scale=1; $e / $f" | bc) |"
+  done
+done
+echo
+echo "Map sizes: each map alone on the plane of the generated scene (its roughness texture, the environment and the"
+echo "point light), against its own reference and floor; bake time and bytes of its histogram asset:"
+echo
+echo "| map | size | method | bake (s) | asset bytes | effect render (s) | effect block L1 | floor | effect / floor |"
+echo "|---|---|---|---|---|---|---|---|---|"
+sized_maps=("scratches 512=gen:512" "scratches 1024=gen:1024")
+[ -f ../shared/data/real/brushed_streaks_diagonal.png ] && sized_maps+=("brushed_streaks_diagonal=real:brushed_streaks_diagonal.png")
+[ -f ../shared/data/real/brick_floor.png ] && sized_maps+=("brick_floor=real:brick_floor.png")
+for entry in "${sized_maps[@]}"; do
+  label=${entry%%=*}
+  source=${entry#*=}
+  d="$work/sized/${label// /_}"
+  mkdir -p "$d"
+  if [ "${source%%:*}" = gen ]; then
+    map="$d/map.png" convention=+Y
+    "$exe" gen scratches --size "${source#gen:}" --seed 1 -q -o "$map"
+  else
+    map="$(pwd)/../shared/data/real/${source#real:}" convention=-Y
+  fi
+  size=$(iinfo "$map" | grep -o '[0-9]\+ x \+[0-9]\+' | head -1 | tr -s ' ')
+  jq --arg map "$map" --arg c "$convention" '.shapes |= map(select(.material == "scratched_steel"))
+    | .materials |= {scratched_steel: (.scratched_steel | .normal_map = {path: $map, convention: $c, repair: true})}' \
+    "$work/histogram/scene.json" >"$d/scene.json"
+  "$exe" render "$d/scene.json" --reference "$rays" -q -o "$d/reference.exr"
+  "$exe" render "$d/scene.json" --reference "$rays" --seed 1 -q -o "$d/reference_seed1.exr"
+  f=$(block_l1 "$d/reference_seed1.exr" "$d/reference.exr")
+  for method in "${methods[@]}"; do
+    v="$d/$method"
+    mkdir -p "$v"
+    jq --arg m "$method" '(.materials[].effects[] | select(.name == "histogram") | .method) = $m' "$d/scene.json" >"$v/scene.json"
+    b=$(/usr/bin/time -f %e "$exe" bake "$v/scene.json" --out-dir "$v/assets" -q 2>&1 | tail -1)
+    bytes=$(cat "$v"/assets/*histogram*.mbk | wc -c)
+    t=$("$exe" render "$v/scene.json" --assets "$v/assets" -o "$v/effect.exr" | seconds)
+    e=$(block_l1 "$v/effect.exr" "$d/reference.exr")
+    echo "| $label | $size | $method | $b | $bytes | $t | $e | $f | $(echo "scale=1; $e / $f" | bc) |"
+  done
+  rm -rf "$d"
 done

@@ -1,4 +1,4 @@
-// Greedy k-means++ and Lloyd's iterations on sorted 1-D values (see adaptive_theta_bins.h).
+// Greedy k-means++ and Lloyd's iterations on sorted 1-D values, and uniform bins (see adaptive_theta_bins.h).
 #include "libbake/histogram/adaptive_theta_bins.h"
 
 #include <algorithm>
@@ -101,6 +101,19 @@ std::vector<size_t> run_starts(const WeightedValues& v, const std::vector<double
   return starts;
 }
 
+// The edges (0, the midpoints of the centres, pi/2) and the RMS distance of the values to their bin's centre.
+void finish_bins(const WeightedValues& v, ThetaBins& bins) {
+  bins.edges = {0.0};
+  for (size_t j = 1; j < bins.centres.size(); ++j) bins.edges.push_back(0.5 * (bins.centres[j - 1] + bins.centres[j]));
+  bins.edges.push_back(kHistogramThetaMax);
+  double squared = 0.0;
+  for (size_t i = 0; i < v.size(); ++i) {
+    const double d = v.value[i] - bins.centres[histogram_theta_bin(bins.edges, v.value[i])];
+    squared += v.weight[i] * d * d;
+  }
+  bins.rms_error = std::sqrt(squared / v.prefix_weight.back());
+}
+
 }  // namespace
 
 ThetaBins adaptive_theta_bins(std::vector<double> thetas, uint32_t k, uint64_t seed) {
@@ -127,15 +140,18 @@ ThetaBins adaptive_theta_bins(std::vector<double> thetas, uint32_t k, uint64_t s
       if (converged) break;
     }
   }
-  bins.edges = {0.0};
-  for (size_t j = 1; j < bins.centres.size(); ++j) bins.edges.push_back(0.5 * (bins.centres[j - 1] + bins.centres[j]));
-  bins.edges.push_back(kHistogramThetaMax);
-  double squared = 0.0;
-  for (size_t i = 0; i < v.size(); ++i) {
-    const double d = v.value[i] - bins.centres[histogram_theta_bin(bins.edges, v.value[i])];
-    squared += v.weight[i] * d * d;
-  }
-  bins.rms_error = std::sqrt(squared / v.prefix_weight.back());
+  finish_bins(v, bins);
+  return bins;
+}
+
+ThetaBins uniform_theta_bins(std::vector<double> thetas, uint32_t k) {
+  if (thetas.empty() || k == 0) throw std::invalid_argument("uniform_theta_bins: no values or no bins");
+  std::sort(thetas.begin(), thetas.end());
+  const WeightedValues v = merge_sorted(thetas);
+  ThetaBins bins;
+  bins.distinct_values = v.size();
+  for (uint32_t j = 0; j < k; ++j) bins.centres.push_back((j + 0.5) * kHistogramThetaMax / k);
+  finish_bins(v, bins);
   return bins;
 }
 

@@ -31,4 +31,9 @@ struct ThetaBins {
 // `thetas` in [0, pi/2] (any order; at least one), `k` >= 1 bins requested.
 ThetaBins adaptive_theta_bins(std::vector<double> thetas, uint32_t k, uint64_t seed);
 
+// The baseline the adaptive bins are measured against ([Shah24] Fig. 3): k bins of equal width pi / (2 k), centred
+// (c_j = (j + 1/2) pi / (2 k), the edges their midpoints as above), whatever the values; bins no value falls in
+// stay (a flat map has k - 1 empty bins). distinct_values and rms_error as for the adaptive bins.
+ThetaBins uniform_theta_bins(std::vector<double> thetas, uint32_t k);
+
 }  // namespace mbk

@@ -21,10 +21,12 @@ AssetWriter histogram_asset_writer(const LoadedNormalMap& input, const Histogram
                             {"theta_bins", K},
                             {"theta_bins_requested", options.theta_bins},
                             {"phi_bins", N},
+                            {"theta_binning", theta_binning_name(options.theta_binning)},
                             {"seed", seed}};
   metadata["conventions"] = normal_map_conventions();
   metadata["conventions"]["bins"] =
-      "theta = atan2(sqrt(x^2 + y^2), z) in theta_edges (adaptive: midpoints of 1-D k-means centres), phi = "
+      "theta = atan2(sqrt(x^2 + y^2), z) in theta_edges (midpoints of the centres: 1-D k-means centres, or uniform), "
+      "phi = "
       "atan2(y, x) in [0, 2 pi) in phi_edges (uniform); bins half-open [lo, hi), the last theta bin also holds pi/2; "
       "phi bin 0 at the pole; bin = theta_bin * phi_bins + phi_bin";
   metadata["conventions"]["bin_counts"] =

@@ -21,6 +21,10 @@ void check_histogram_table_size(uint32_t width, uint32_t height, const Histogram
                 where);
 }
 
+const char* theta_binning_name(ThetaBinning binning) {
+  return binning == ThetaBinning::uniform ? "uniform" : "adaptive";
+}
+
 uint64_t histogram_seed(const std::string& content_hash) {
   const size_t colon = content_hash.find(':');
   return std::stoull(content_hash.substr(colon + 1), nullptr, 16);
@@ -42,7 +46,9 @@ BakedHistogram bake_histogram(const NormalMap& map, const HistogramBakeOptions& 
   BakedHistogram out;
   out.width = map.width;
   out.height = map.height;
-  out.theta = adaptive_theta_bins(std::move(thetas), options.theta_bins, seed);
+  out.theta = options.theta_binning == ThetaBinning::uniform
+                  ? uniform_theta_bins(std::move(thetas), options.theta_bins)
+                  : adaptive_theta_bins(std::move(thetas), options.theta_bins, seed);
   out.bins = {out.theta.edges, options.phi_bins};
   out.counts = bin_count_table(texel_bins(map, out.bins), map.width, map.height, out.bins.count(), progress);
   return out;

@@ -14,10 +14,16 @@
 
 namespace mbk {
 
+enum class ThetaBinning { adaptive, uniform };  // adaptive_theta_bins or uniform_theta_bins
+
 struct HistogramBakeOptions {
   uint32_t theta_bins = kHistogramDefaultThetaBins;  // requested; fewer when the map has fewer distinct thetas
   uint32_t phi_bins = kHistogramDefaultPhiBins;
+  ThetaBinning theta_binning = ThetaBinning::adaptive;
 };
+
+// "adaptive" or "uniform", as metadata and options spell it.
+const char* theta_binning_name(ThetaBinning binning);
 
 struct BakedHistogram {
   uint32_t width = 0, height = 0;

@@ -34,6 +34,7 @@ AssetWriter neural_histogram_asset_writer(const LoadedNormalMap& input, const Ne
                             {"theta_bins", K},
                             {"theta_bins_requested", options.bins.theta_bins},
                             {"phi_bins", shape.phi_bins},
+                            {"theta_binning", theta_binning_name(options.bins.theta_binning)},
                             {"seed", kmeans_seed},
                             {"features", shape.features},
                             {"hidden", shape.hidden},

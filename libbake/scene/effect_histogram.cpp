@@ -6,6 +6,7 @@
 //   method         "exact"  the histogram technique's --method
 //   theta_bins     9        the histogram technique's --theta-bins
 //   phi_bins       32       the histogram technique's --phi-bins
+//   theta_binning  adaptive the histogram technique's --theta-binning (uniform: the baseline of [Shah24] Fig. 3)
 //   roughness      0.05     intrinsic roughness sigma of every normal's lobe, radians, in [0.001, 1]
 //   roughness_map  (none)   an image whose first channel is sigma, relative to the scene file (overrides roughness)
 //   sh_order       20       SH order of the distant lighting the NDF is dotted with
@@ -49,6 +50,7 @@ std::vector<Parameter> histogram_parameters() {
   return {method,
           scene_key(effect_parameter("histogram", "theta_bins", "theta_bins")),
           scene_key(effect_parameter("histogram", "phi_bins", "phi_bins")),
+          scene_key(effect_parameter("histogram", "theta_binning", "theta_binning")),
           roughness,
           roughness_map,
           sh_order};
@@ -76,19 +78,23 @@ EffectInfo histogram_effect() {
   e.assets = [](const Material& m, const EffectUse& use) {
     const BakeInput map = normal_map_input(m);
     const HistogramBakeOptions options = histogram_bake_options(use.options);
-    AssetRecipe recipe{
-        "histogram",
-        {{"method", use.options.at("method")},
-         {"theta_bins_requested", options.theta_bins},
-         {"phi_bins", options.phi_bins}},
-        {map},
-        [map, options](Progress& progress) {
-          const LoadedNormalMap loaded = load_normal_map(map.path, map.normal_map->load_options());
-          const uint64_t seed = histogram_seed(loaded.record.content_hash);
-          return histogram_asset_writer(loaded, options, seed,
-                                        bake_histogram(loaded.map, options, seed, progress, map.path.string()));
-        },
-        {{"method", use.options.at("method")}, {"theta_bins", options.theta_bins}, {"phi_bins", options.phi_bins}}};
+    AssetRecipe recipe{"histogram",
+                       {{"method", use.options.at("method")},
+                        {"theta_bins_requested", options.theta_bins},
+                        {"phi_bins", options.phi_bins},
+                        {"theta_binning", use.options.at("theta_binning")}},
+                       {map},
+                       [map, options](Progress& progress) {
+                         const LoadedNormalMap loaded = load_normal_map(map.path, map.normal_map->load_options());
+                         const uint64_t seed = histogram_seed(loaded.record.content_hash);
+                         return histogram_asset_writer(
+                             loaded, options, seed,
+                             bake_histogram(loaded.map, options, seed, progress, map.path.string()));
+                       },
+                       {{"method", use.options.at("method")},
+                        {"theta_bins", options.theta_bins},
+                        {"phi_bins", options.phi_bins},
+                        {"theta_binning", use.options.at("theta_binning")}}};
     return std::vector<AssetRecipe>{recipe};
   };
   return e;

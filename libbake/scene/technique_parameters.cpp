@@ -117,6 +117,9 @@ std::vector<TechniqueSchema> declare_schemas() {
                                   "fewer distinct theta values)")),
         command_line_only(
             integer("phi_bins", 1, kHistogramMaxPhiBins, kHistogramDefaultPhiBins, "Uniform phi bins, N")),
+        command_line_only(choice("theta_binning", {"adaptive", "uniform"}, "adaptive",
+                                 "Theta bin centres: adaptive (1-D k-means of the map's normals, [Shah24] Sec. 4.1) "
+                                 "or uniform (equal widths, the baseline of [Shah24] Fig. 3)")),
         command_line_only(integer("features", 1, kNeuralHistogramMaxFeatures, kNeuralHistogramDefaultFeatures,
                                   "Neural: features per texel of the feature pyramid, F")),
         command_line_only(integer("iterations", 1, kNeuralHistogramMaxIterations, kNeuralHistogramDefaultIterations,
@@ -172,7 +175,8 @@ VmfBakeOptions vmf_bake_options(const nlohmann::json& parameters) {
 }
 
 HistogramBakeOptions histogram_bake_options(const nlohmann::json& parameters) {
-  return {parameters.at("theta_bins").get<uint32_t>(), parameters.at("phi_bins").get<uint32_t>()};
+  return {parameters.at("theta_bins").get<uint32_t>(), parameters.at("phi_bins").get<uint32_t>(),
+          parameters.at("theta_binning") == "uniform" ? ThetaBinning::uniform : ThetaBinning::adaptive};
 }
 
 NeuralHistogramBakeOptions neural_histogram_bake_options(const nlohmann::json& parameters) {

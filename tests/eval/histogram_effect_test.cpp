@@ -3,7 +3,10 @@
 // refuses bad options naming them; the filtered render of binned P-NDFs under an environment map and a point light
 // agrees with the Monte Carlo reference of Eq. 2 (which reads no asset) within twice the reference's own floor on
 // block means, for a constant roughness and for a roughness texture; a roughness texture changes the picture without
-// a rebake, and a constant roughness texture renders exactly as the same constant.
+// a rebake, and a constant roughness texture renders exactly as the same constant. A furnace, the check that does not
+// share the effect's code with its reference: a flat mirror-like metal seen from above under a uniform white sky
+// reflects f0 (every reflected lobe integrates the sky to 1; F = f0 at normal incidence; G2 = 1 for a base
+// roughness near zero), by the effect and by the reference alike.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -121,12 +124,53 @@ TEST(HistogramEffect, BakesOnlyTheHistogramWithCanonicalOptions) {
   std::vector<std::string> kinds;
   for (const PlannedAsset& a : plan_assets(scene)) kinds.push_back(a.recipe.kind);
   EXPECT_EQ(kinds, (std::vector<std::string>{"histogram", "mip"}));  // mip: the material's baseline
-  EXPECT_EQ(scene.materials.at("metal").effects.at(0).options,
-            (json{{"method", "exact"}, {"theta_bins", 9}, {"phi_bins", 16}, {"roughness", 0.05}, {"sh_order", 20}}));
-  for (const json& bad : {json{{"name", "histogram"}, {"roughness", 0}}, json{{"name", "histogram"}, {"sh_order", 0}},
-                          json{{"name", "histogram"}, {"method", "lossy"}}, json{{"name", "histogram"}, {"sigma", 1}},
-                          json{{"name", "histogram"}, {"roughness_map", 3}}})
+  EXPECT_EQ(scene.materials.at("metal").effects.at(0).options, (json{{"method", "exact"},
+                                                                     {"theta_bins", 9},
+                                                                     {"phi_bins", 16},
+                                                                     {"theta_binning", "adaptive"},
+                                                                     {"roughness", 0.05},
+                                                                     {"sh_order", 20}}));
+  for (const json& bad :
+       {json{{"name", "histogram"}, {"roughness", 0}}, json{{"name", "histogram"}, {"sh_order", 0}},
+        json{{"name", "histogram"}, {"method", "lossy"}}, json{{"name", "histogram"}, {"sigma", 1}},
+        json{{"name", "histogram"}, {"theta_binning", "kmeans"}}, json{{"name", "histogram"}, {"roughness_map", 3}}})
     EXPECT_THROW(scene_in(dir.path(), bad), Error) << bad.dump();
+}
+
+TEST(HistogramEffect, FlatMirrorUnderAUniformSkyReflectsF0ByEffectAndReference) {
+  ScratchDir dir("histogram_effect_furnace");
+  NormalMap flat;
+  flat.width = flat.height = 8;
+  flat.texels.assign(64, Vec3f(0, 0, 1));
+  save_normal_map(dir / "map.exr", flat);
+  Image sky;
+  sky.width = 32;
+  sky.height = 16;
+  sky.channels = 3;
+  sky.pixels.assign(size_t(32) * 16 * 3, 1.0f);
+  save_image(dir / "env.exr", sky);
+  for (const double f0 : {1.0, 0.5})
+    for (const double sigma : {0.01, 0.05}) {
+      SCOPED_TRACE("f0 " + std::to_string(f0) + ", sigma " + std::to_string(sigma));
+      json s = plane_scene({{"name", "histogram"}, {"roughness", sigma}, {"sh_order", 40}});
+      s["camera"] = {{"position", {0.0, 3.0, 0.0}},
+                     {"look_at", {0.0, 0.0, 0.0}},
+                     {"up", {0, 0, -1}},
+                     {"fov_y", 20},
+                     {"width", 16},
+                     {"height", 16}};
+      s["lights"] = json::array({{{"type", "environment"}, {"path", "env.exr"}}});
+      json& metal = s["materials"]["metal"];
+      metal["albedo"] = 0.0;
+      metal["specular"] = {{"distribution", "ggx"}, {"roughness", 0.001}, {"f0", {f0, f0, f0}}};
+      metal["normal_map"]["path"] = "map.exr";
+      testing::write_json(dir / "s.json", s);
+      const Scene scene = load_scene(dir / "s.json");
+      bake_scene(scene);
+      // Views within 6 degrees of the normal: (1 - cos)^5 < 1e-11, the lobe's mass below the horizon e^-(1/sigma^2).
+      for (const Image& im : {render(scene, 1), render(scene, 1, 4)})
+        for (size_t i = 0; i < im.pixels.size(); ++i) EXPECT_NEAR(im.pixels[i], f0, 0.01 * f0) << "value " << i;
+    }
 }
 
 TEST(HistogramEffect, MatchesItsReferenceUnderAnEnvironmentAndAPointLight) {

@@ -417,6 +417,10 @@ std::vector<CorruptCase> corrupt_cases() {
        [] { return test::graph_bytes([](test::GraphParts& p) { p.metadata.erase("graph"); }); }},
       {"HistogramMethodNeural", 21001,
        [] { return test::histogram_with([](test::HistogramFixture& f) { f.parameters["method"] = "neural"; }); }},
+      {"HistogramThetaBinningUnknown", 21001,
+       [] {
+         return test::histogram_with([](test::HistogramFixture& f) { f.parameters["theta_binning"] = "kmeans"; });
+       }},
       {"HistogramMoreBinsThanRequested", 21001,
        [] {
          return test::histogram_with([](test::HistogramFixture& f) { f.parameters["theta_bins_requested"] = 1; });

@@ -2,7 +2,8 @@
 // fewer distinct thetas than bins (one bin per value), exactly K distinct values; then two separated clusters, whose
 // centres are their means in closed form; and generated and real maps, where the result must be a fixed point of
 // Lloyd's step (each centre the mean of the values its bin holds, counted here by brute force), every bin non-empty,
-// the same for the same seed, and at the paper's claim's side: a lower k-means cost than uniform bins.
+// the same for the same seed, and at the paper's claim's side: a lower k-means cost than uniform bins. Uniform bins
+// (the baseline): K equal widths whatever the values, a flat map included, with their RMS error counted by brute force.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -152,6 +153,32 @@ TEST(AdaptiveThetaBins, RealMapsGiveLloydFixedPoints) {
     expect_lloyd_fixed_point(values, b);
   });
   if (maps == 0) GTEST_SKIP() << "no real normal maps in " << MICROBAKE_REAL_DATA_DIR;
+}
+
+TEST(UniformThetaBins, FlatMapKeepsKEqualBins) {
+  const ThetaBins b = uniform_theta_bins(std::vector<double>(100, 0.0), 9);
+  ASSERT_EQ(b.centres.size(), 9u);
+  expect_valid_edges(b);
+  for (int j = 0; j <= 9; ++j) EXPECT_NEAR(b.edges[j], kHalfPi * j / 9, 1e-15) << "edge " << j;
+  EXPECT_EQ(b.distinct_values, 1u);
+  EXPECT_NEAR(b.rms_error, kHalfPi / 18, 1e-15);  // every value at 0, its bin's centre at half a width
+}
+
+TEST(UniformThetaBins, OneBinIsTheMiddleOfTheRange) {
+  const ThetaBins b = uniform_theta_bins({0.1, 0.2}, 1);
+  EXPECT_EQ(b.centres, std::vector<double>{kHalfPi / 2});
+  EXPECT_EQ(b.edges, (std::vector<double>{0.0, kHalfPi}));
+}
+
+TEST(UniformThetaBins, GeneratedMapsCostMoreThanAdaptiveBinsWithTheRmsErrorCountedByBruteForce) {
+  for (const char* kind : {"bumps", "scratches", "flakes"}) {
+    SCOPED_TRACE(kind);
+    const std::vector<double> values = map_thetas(generate_normal_map(kind, {96, 64}, 3, Progress::silent()));
+    const ThetaBins u = uniform_theta_bins(values, 9), a = adaptive_theta_bins(values, 9, 3);
+    expect_valid_edges(u);
+    EXPECT_NEAR(u.rms_error, std::sqrt(clustering_cost(values, u.edges, u.centres) / values.size()), 1e-12);
+    EXPECT_LT(a.rms_error, u.rms_error);
+  }
 }
 
 }  // namespace
