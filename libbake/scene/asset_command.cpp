@@ -37,7 +37,8 @@ void append_option(std::vector<std::string>& words, const std::string& option, c
 
 std::vector<std::string> asset_command(const AssetRecipe& recipe, const std::filesystem::path& output,
                                        const std::string& program, const std::vector<std::string>& extra) {
-  std::vector<std::string> words = {program, recipe.kind};
+  const std::string& technique = recipe.technique.empty() ? recipe.kind : recipe.technique;
+  std::vector<std::string> words = {program, technique};
   for (const BakeInput& in : recipe.inputs)
     if (in.option.empty()) words.push_back(in.path.string());
   for (const BakeInput& in : recipe.inputs) {
@@ -47,12 +48,12 @@ std::vector<std::string> asset_command(const AssetRecipe& recipe, const std::fil
       append_option(words, "--convention", convention_request_name(in.normal_map->convention));
     if (in.normal_map->repair) words.push_back("--repair-invalid");
   }
-  for (const Parameter& p : technique_schema(recipe.kind).parameters) {
+  for (const Parameter& p : technique_schema(technique).parameters) {
     if (p.option.empty()) continue;
     const nlohmann::json value =
         recipe.technique_values.contains(p.name) ? recipe.technique_values.at(p.name) : p.default_value;
     if (value.is_null())
-      throw std::logic_error("no value for " + recipe.kind + " parameter '" + p.name + "' (an effect's recipe)");
+      throw std::logic_error("no value for " + technique + " parameter '" + p.name + "' (an effect's recipe)");
     append_option(words, p.option, exact_value_text(p, value));
   }
   words.insert(words.end(), extra.begin(), extra.end());

@@ -3,14 +3,16 @@
 // histogram asset only (`microbake histogram`, its method and bins); the roughness (a constant, or a texture that
 // the shader reads at shading time, so changing it needs no rebake) and the SH order of the distant lighting are the
 // shader's. Its evaluator side is libbake/eval/histogram_effect.h. Keys (docs/SCENES.md "Effect histogram"):
-//   method         "exact"  the histogram technique's --method
+//   method         "exact"  the histogram technique's --method (neural: kind neural_histogram, trained)
 //   theta_bins     9        the histogram technique's --theta-bins
 //   phi_bins       32       the histogram technique's --phi-bins
 //   theta_binning  adaptive the histogram technique's --theta-binning (uniform: the baseline of [Shah24] Fig. 3)
+//   features, iterations, batch, seed   the technique's neural training options (used by method neural only)
 //   roughness      0.05     intrinsic roughness sigma of every normal's lobe, radians, in [0.001, 1]
 //   roughness_map  (none)   an image whose first channel is sigma, relative to the scene file (overrides roughness)
 //   sh_order       20       SH order of the distant lighting the NDF is dotted with
 #include "libbake/histogram/histogram_asset.h"
+#include "libbake/histogram/neural_histogram_asset.h"
 #include "libbake/histogram/roughness_lobe.h"
 #include "libbake/scene/effect_registry.h"
 #include "libbake/scene/technique_parameters.h"
@@ -42,15 +44,18 @@ std::vector<Parameter> histogram_parameters() {
   sh_order.max = 64;
   sh_order.default_value = 20;
   sh_order.doc = "SH order of the distant lighting the NDF is dotted with ([Shah24] Eq. 9)";
-  // The effect shades from exact assets (libbake/eval/histogram_effect.h): its method key is narrower than the
-  // command's, whose default is neural.
+  // Scenes default to the exact table, which bakes in seconds up to 1024^2 (the command defaults to neural, which
+  // trains for minutes whatever the map's size but scales to maps whose table would not fit).
   Parameter method = scene_key(effect_parameter("histogram", "method", "method"));
-  method.choices = {"exact"};
   method.default_value = "exact";
   return {method,
           scene_key(effect_parameter("histogram", "theta_bins", "theta_bins")),
           scene_key(effect_parameter("histogram", "phi_bins", "phi_bins")),
           scene_key(effect_parameter("histogram", "theta_binning", "theta_binning")),
+          scene_key(effect_parameter("histogram", "features", "features")),
+          scene_key(effect_parameter("histogram", "iterations", "iterations")),
+          scene_key(effect_parameter("histogram", "batch", "batch")),
+          scene_key(effect_parameter("histogram", "seed", "seed")),
           roughness,
           roughness_map,
           sh_order};
@@ -78,23 +83,36 @@ EffectInfo histogram_effect() {
   e.assets = [](const Material& m, const EffectUse& use) {
     const BakeInput map = normal_map_input(m);
     const HistogramBakeOptions options = histogram_bake_options(use.options);
-    AssetRecipe recipe{"histogram",
-                       {{"method", use.options.at("method")},
-                        {"theta_bins_requested", options.theta_bins},
-                        {"phi_bins", options.phi_bins},
-                        {"theta_binning", use.options.at("theta_binning")}},
-                       {map},
-                       [map, options](Progress& progress) {
-                         const LoadedNormalMap loaded = load_normal_map(map.path, map.normal_map->load_options());
-                         const uint64_t seed = histogram_seed(loaded.record.content_hash);
-                         return histogram_asset_writer(
-                             loaded, options, seed,
-                             bake_histogram(loaded.map, options, seed, progress, map.path.string()));
-                       },
-                       {{"method", use.options.at("method")},
-                        {"theta_bins", options.theta_bins},
-                        {"phi_bins", options.phi_bins},
-                        {"theta_binning", use.options.at("theta_binning")}}};
+    AssetRecipe recipe;
+    recipe.inputs = {map};
+    recipe.parameters = {{"method", use.options.at("method")},
+                         {"theta_bins_requested", options.theta_bins},
+                         {"phi_bins", options.phi_bins},
+                         {"theta_binning", use.options.at("theta_binning")}};
+    recipe.technique = "histogram";
+    recipe.technique_values = {{"method", use.options.at("method")},
+                               {"theta_bins", options.theta_bins},
+                               {"phi_bins", options.phi_bins},
+                               {"theta_binning", use.options.at("theta_binning")}};
+    if (use.options.at("method") == "neural") {
+      const NeuralHistogramBakeOptions neural = neural_histogram_bake_options(use.options);
+      recipe.kind = "neural_histogram";
+      for (const char* key : {"features", "iterations", "batch"})
+        recipe.parameters[key] = recipe.technique_values[key] = use.options.at(key);
+      recipe.parameters["training_seed"] = recipe.technique_values["seed"] = use.options.at("seed");
+      recipe.bake = [map, neural](Progress& progress) {
+        const LoadedNormalMap loaded = load_normal_map(map.path, map.normal_map->load_options());
+        return bake_neural_histogram_asset(loaded, neural, progress, map.path.string());
+      };
+    } else {
+      recipe.kind = "histogram";
+      recipe.bake = [map, options](Progress& progress) {
+        const LoadedNormalMap loaded = load_normal_map(map.path, map.normal_map->load_options());
+        const uint64_t seed = histogram_seed(loaded.record.content_hash);
+        return histogram_asset_writer(loaded, options, seed,
+                                      bake_histogram(loaded.map, options, seed, progress, map.path.string()));
+      };
+    }
     return std::vector<AssetRecipe>{recipe};
   };
   return e;

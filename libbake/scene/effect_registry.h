@@ -45,6 +45,7 @@ struct AssetRecipe {
   // The values of the technique's parameters (technique_schema(kind)) that make `microbake <kind>` bake the same
   // bytes; a parameter absent here takes its default (cli/asset_command.h turns them into options).
   nlohmann::json technique_values = nlohmann::json::object();
+  std::string technique = {};  // the command (technique) that bakes it, when its name is not the kind's
 };
 
 struct EffectInfo {

@@ -128,6 +128,10 @@ TEST(HistogramEffect, BakesOnlyTheHistogramWithCanonicalOptions) {
                                                                      {"theta_bins", 9},
                                                                      {"phi_bins", 16},
                                                                      {"theta_binning", "adaptive"},
+                                                                     {"features", 16},
+                                                                     {"iterations", 20000},
+                                                                     {"batch", 512},
+                                                                     {"seed", 1},
                                                                      {"roughness", 0.05},
                                                                      {"sh_order", 20}}));
   for (const json& bad :
@@ -180,6 +184,38 @@ TEST(HistogramEffect, MatchesItsReferenceUnderAnEnvironmentAndAPointLight) {
   bake_scene(scene);
   const BlockErrors e = block_errors(scene, "scratches, roughness 0.05, order 40");
   EXPECT_LT(e.effect, 2.0 * e.floor + 0.005);
+}
+
+// The neural histogram behind the same shader: a short training on the 64^2 scratches map bakes only the
+// neural_histogram asset, and its render stays near the reference, no further from it than a stated margin beyond
+// the exact table's render (what a few hundred Adam steps cost).
+TEST(HistogramEffect, NeuralHistogramRendersNearTheExactTable) {
+  ScratchDir dir("histogram_effect_neural");
+  write_inputs(dir.path());
+  // The map tiled 24 times across the plane, so that most footprints span 8 texels or more and read the network
+  // (smaller ones count the stored texel bins exactly).
+  const auto tiled = [&](const json& effect) {
+    json s = plane_scene(effect);
+    s["shapes"][0]["uv_scale"] = {24, 24};
+    testing::write_json(dir / "s.json", s);
+    return load_scene(dir / "s.json");
+  };
+  const Scene exact = tiled({{"name", "histogram"}, {"sh_order", 40}});
+  const Scene neural =
+      tiled({{"name", "histogram"}, {"sh_order", 40}, {"method", "neural"}, {"iterations", 400}, {"batch", 256}});
+  std::vector<std::string> kinds;
+  for (const PlannedAsset& a : plan_assets(neural)) kinds.push_back(a.recipe.kind);
+  EXPECT_EQ(kinds, (std::vector<std::string>{"neural_histogram", "mip"}));
+  bake_scene(exact);
+  bake_scene(neural);
+  const Image reference = render(exact, 1, 8), exact_image = render(exact, 1), neural_image = render(neural, 1);
+  const double e_exact = compare_images(exact_image, reference, 8).block_relative_l1;
+  const double e_neural = compare_images(neural_image, reference, 8).block_relative_l1;
+  const double apart = compare_images(neural_image, exact_image, 8).block_relative_l1;
+  std::printf("[ info ] block L1 against the reference: exact %.4f, neural (400 steps) %.4f; neural vs exact %.4f\n",
+              e_exact, e_neural, apart);
+  EXPECT_GT(apart, 0.0);  // the network was read
+  EXPECT_LT(e_neural, e_exact + 0.02);
 }
 
 TEST(HistogramEffect, RoughnessTextureNeedsNoRebakeAndMatchesItsReference) {

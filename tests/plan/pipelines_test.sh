@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # `microbake plan` run by the real tools (issue 14 part 2): two scenes using every baked kind (mip, lut, rmq, sh, vmf,
-# crease, colormap, moments), with a -Y map, a repaired map, exact non-round numbers and assets the scenes share,
-# planned as ninja, make and commands files and run by ninja, make and GNU parallel. Every tool must write exactly the
-# files `microbake bake` writes, byte for byte; a second ninja/make does nothing; after one effect parameter changes,
-# ninja re-plans and bakes exactly the one new asset. Exit 77 (CTest: skipped) when ninja, make or parallel is absent.
+# crease, colormap, moments, histogram and neural_histogram, a kind whose command has another name), with a -Y map, a
+# repaired map, exact non-round numbers and assets the scenes share, planned as ninja, make and commands files and run
+# by ninja, make and GNU parallel. Every tool must write exactly the files `microbake bake` writes, byte for byte; a
+# second ninja/make does nothing; after one effect parameter changes, ninja re-plans and bakes exactly the one new
+# asset. Exit 77 (CTest: skipped) when ninja, make or parallel is absent.
 # Usage: tests/plan/pipelines_test.sh MICROBAKE_EXE
 set -euo pipefail
 exe=$(realpath "$1")
@@ -49,6 +50,10 @@ scene() {  # scene NAME SH_ORDER
   "panels": {"normal_map": {"path": "../maps/panels.png"},
              "effects": [{"name": "crease", "curves": "../maps/panels.json", "band": 2.5, "smooth_iterations": 7}]},
   "broken": {"normal_map": {"path": "../maps/broken.png", "repair": true}, "effects": ["toksvig"]},
+  "neural": {"normal_map": {"path": "../maps/bumps.png", "convention": "-Y"},
+             "effects": [{"name": "histogram", "method": "neural", "iterations": 20, "batch": 64, "phi_bins": 8}]},
+  "binned": {"normal_map": {"path": "../maps/bumps.png", "convention": "-Y"},
+             "effects": [{"name": "histogram", "theta_binning": "uniform", "theta_bins": 5, "phi_bins": 8}]},
   "ground": {"effects": [{"name": "colormap", "colormap": "../maps/terrain.json", "driver": "../maps/bumps.png",
                           "table_size": [64, 16], "sigma_max": 0.3}]}}}
 JSON
@@ -61,8 +66,9 @@ sed -i 's/"order": 4/"order": 3/' scenes/two.json
 "$exe" bake scenes/one.json scenes/two.json --out-dir baked -q
 expected=$(cd baked && ls | sort)
 count=$(echo "$expected" | wc -l)
-# one: lut, rmq, mip and sh 4 of bumps (-Y), vmf, crease and mip of panels, mip of broken, colormap, moments; two: sh 3.
-[ "$count" -eq 11 ] || fail "bake wrote $count assets, expected 11: $expected"
+# one: lut, rmq, mip and sh 4 of bumps (-Y), vmf, crease and mip of panels, mip of broken, colormap, moments,
+# neural_histogram and histogram of bumps; two: sh 3.
+[ "$count" -eq 13 ] || fail "bake wrote $count assets, expected 13: $expected"
 
 same_as_bake() {  # same_as_bake FOLDER TOOL
   local got
@@ -84,7 +90,8 @@ sleep 1.1
 sed -i 's/"order": 4/"order": 5/' scenes/one.json
 out=$(ninja -j2 2>>tools.log)
 [ "$(echo "$out" | grep -c '\] sh ')" -eq 1 ] || fail "after one change ninja baked: $out"
-[ "$(echo "$out" | grep -Ec '\] (mip|lut|rmq|vmf|crease|colormap|moments) ')" -eq 0 ] || fail "ninja rebuilt more: $out"
+[ "$(echo "$out" | grep -Ec '\] (mip|lut|rmq|vmf|crease|colormap|moments|histogram|neural_histogram) ')" -eq 0 ] ||
+  fail "ninja rebuilt more: $out"
 after=$(cd by_ninja && stat -c '%n %Y' * | sort)
 [ "$(comm -13 <(echo "$before") <(echo "$after") | wc -l)" -eq 1 ] || fail "other assets were rewritten"
 echo "ok: after changing one sh order, ninja re-planned and baked only that sh asset"
