@@ -47,10 +47,11 @@ int main(int argc, char** argv) try {
   std::printf("map %s, %ux%u, %u x %u bins, %u iterations x %u footprints, F = %u\n", argv[2], shape.width,
               shape.height, shape.theta_bins, shape.phi_bins, p["iterations"].get<uint32_t>(),
               p["batch"].get<uint32_t>(), shape.features);
-  std::printf("bytes: asset %llu (pyramid + networks %llu, texel bins %llu), exact table %llu: %.3f%%\n",
-              (unsigned long long)file_bytes, (unsigned long long)model_bytes,
-              (unsigned long long)(uint64_t(shape.width) * shape.height * 2), (unsigned long long)table_bytes,
-              100.0 * double(file_bytes) / double(table_bytes));
+  std::printf(
+      "bytes: asset %llu (texel bins, pyramid and networks %llu, of which pyramid and networks %llu), exact "
+      "table %llu: %.3f%%\n",
+      (unsigned long long)file_bytes, (unsigned long long)shape.model_bytes(), (unsigned long long)model_bytes,
+      (unsigned long long)table_bytes, 100.0 * double(file_bytes) / double(table_bytes));
   std::printf("baseline: %llu bytes, level 0 %u x %u cells of %.1f texels, %u levels\n",
               (unsigned long long)baseline.bytes(), baseline.grid().level_width[0], baseline.grid().level_height[0],
               baseline.grid().base, baseline.grid().levels());
