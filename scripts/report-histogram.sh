@@ -7,7 +7,10 @@
 # L1 (relative L1 of 8 x 8 block means against the reference) of the effect and of plain normal mapping beside the
 # floor; the same per light; the environment alone at SH orders 10, 20, 40 and 60 (time and error), so the
 # order's cost and accuracy read side by side; and each variant of the bins and storage (adaptive or uniform theta
-# bins, [Shah24] Fig. 3) with its bake time, bytes and error against the same reference.
+# bins, [Shah24] Fig. 3) with its bake time, bytes and error against the same reference; then each map alone at
+# 512^2 and 1024^2 (generated, and real when ../shared is there) with the exact table and the neural histogram
+# (bake or training time, bytes, render time and error against its own reference), and each neural asset's
+# histogram KL per footprint side next to a MIP pyramid of histograms of equal bytes (the non-neural baseline).
 #
 #   bash scripts/report-histogram.sh [BUILD_DIR] [RAYS]     # default build/ (a Release build), RAYS = 16
 set -euo pipefail
@@ -16,6 +19,8 @@ build="${1:-build}"
 rays="${2:-16}"
 exe="$(pwd)/$build/microbake"
 [ -x "$exe" ] || { echo "report: $exe not found (build first: scripts/build.sh $build)" >&2; exit 2; }
+ninja -C "$build" bench_neural_histogram >/dev/null
+bench="$(pwd)/$build/tests/bench_neural_histogram"
 command -v jq >/dev/null || { echo "report: jq is needed (apt-get install jq)" >&2; exit 2; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -26,7 +31,7 @@ block_l1() { "$exe" compare "$1" "$2" --block 8 --format json | jq -r '.block_re
 
 # Variants of every histogram effect of a scene for the bins-and-storage table: name=JSON merged into the effect.
 variants=('adaptive={"theta_binning": "adaptive"}' 'uniform={"theta_binning": "uniform"}')
-methods=(exact)  # the histogram's storage in the map-size table
+methods=(exact neural)  # the histogram's storage in the map-size table (neural: the command's default training)
 scenes=(histogram)
 [ -f ../shared/data/real/brushed_streaks_diagonal.png ] && scenes+=(histogram_real)
 for s in "${scenes[@]}"; do
@@ -146,6 +151,15 @@ for entry in "${sized_maps[@]}"; do
     t=$("$exe" render "$v/scene.json" --assets "$v/assets" -o "$v/effect.exr" | seconds)
     e=$(block_l1 "$v/effect.exr" "$d/reference.exr")
     echo "| $label | $size | $method | $b | $bytes | $t | $e | $f | $(echo "scale=1; $e / $f" | bc) |"
+    if [ "$method" = neural ]; then
+      { echo; echo "#### $label"; echo
+        "$bench" "$v"/assets/*.neural_histogram.*.mbk "$map" "$convention" repair; } >>"$work/kl.md"
+    fi
   done
   rm -rf "$d"
 done
+echo
+echo "Histogram KL per footprint side of each neural asset above (tests/bench/neural_histogram_bench.cpp: mean"
+echo "D_KL(exact || predicted) over 400 footprints per side, against a MIP pyramid of histograms of the model's bytes"
+echo "with trilinear interpolation, [DLW*22], and the whole map's histogram):"
+cat "$work/kl.md"
