@@ -65,7 +65,7 @@ for s in "${scenes[@]}"; do
   e=$(block_l1 "$d/histogram.exr" "$d/histogram_reference.exr")
   p=$(block_l1 "$d/histogram_plain.exr" "$d/histogram_reference.exr")
   f=$(block_l1 "$d/histogram_reference_seed1.exr" "$d/histogram_reference.exr")
-  echo "| $s | $t_effect | $t_reference | $t_plain | $e | $p | $f | $(echo "scale=1; $e / $f" | bc) |"
+  echo "| $s | $t_effect | $t_reference | $t_plain | $e | $p | $f | $(printf "%.1f" "$(echo "scale=3; $e / $f" | bc)") |"
 done
 echo
 echo "Per light (half resolution, each with its own floor):"
@@ -91,7 +91,7 @@ for s in "${scenes[@]}"; do
       "$d/scene.json" >"$d/order.json"
     t=$("$exe" render "$d/order.json" --assets "$work/$s/assets" -o "$d/order$order.exr" | seconds)
     e=$(block_l1 "$d/order$order.exr" "$d/reference.exr")
-    echo "| $s | $order | $t | $e | $f | $(echo "scale=1; $e / $f" | bc) |"
+    echo "| $s | $order | $t | $e | $f | $(printf "%.1f" "$(echo "scale=3; $e / $f" | bc)") |"
   done
 done
 echo
@@ -112,12 +112,13 @@ for s in "${scenes[@]}"; do
     bytes=$(cat "$v"/assets/*.mbk | wc -c)
     t=$("$exe" render "$v/scene.json" --assets "$v/assets" -o "$v/effect.exr" | seconds)
     e=$(block_l1 "$v/effect.exr" "$d/histogram_reference.exr")
-    echo "| $s | $name | $b | $bytes | $t | $e | $f | $(echo "scale=1; $e / $f" | bc) |"
+    echo "| $s | $name | $b | $bytes | $t | $e | $f | $(printf "%.1f" "$(echo "scale=3; $e / $f" | bc)") |"
   done
 done
 echo
 echo "Map sizes: each map alone on the plane of the generated scene (its roughness texture, the environment and the"
-echo "point light), against its own reference and floor; bake time and bytes of its histogram asset:"
+echo "point light), tiled 20 x 20 so that footprints span 8 texels or more, against its own reference and floor; bake"
+echo "(training) time and bytes of its histogram asset:"
 echo
 echo "| map | size | method | bake (s) | asset bytes | effect render (s) | effect block L1 | floor | effect / floor |"
 echo "|---|---|---|---|---|---|---|---|---|"
@@ -136,7 +137,9 @@ for entry in "${sized_maps[@]}"; do
     map="$(pwd)/../shared/data/real/${source#real:}" convention=-Y
   fi
   size=$(iinfo "$map" | grep -o '[0-9]\+ x \+[0-9]\+' | head -1 | tr -s ' ')
-  jq --arg map "$map" --arg c "$convention" '.shapes |= map(select(.material == "scratched_steel"))
+  # The map tiled 20 times across the plane (the scene's 5 x 5 m), so that most pixels' footprints span 8 texels or
+  # more and read the neural histogram's network (smaller ones are counted exactly from its stored texel bins).
+  jq --arg map "$map" --arg c "$convention" '.shapes |= map(select(.material == "scratched_steel") | .uv_scale = [20, 20])
     | .materials |= {scratched_steel: (.scratched_steel | .normal_map = {path: $map, convention: $c, repair: true})}' \
     "$work/histogram/scene.json" >"$d/scene.json"
   "$exe" render "$d/scene.json" --reference "$rays" -q -o "$d/reference.exr"
@@ -150,10 +153,11 @@ for entry in "${sized_maps[@]}"; do
     bytes=$(cat "$v"/assets/*histogram*.mbk | wc -c)
     t=$("$exe" render "$v/scene.json" --assets "$v/assets" -o "$v/effect.exr" | seconds)
     e=$(block_l1 "$v/effect.exr" "$d/reference.exr")
-    echo "| $label | $size | $method | $b | $bytes | $t | $e | $f | $(echo "scale=1; $e / $f" | bc) |"
+    echo "| $label | $size | $method | $b | $bytes | $t | $e | $f | $(printf "%.1f" "$(echo "scale=3; $e / $f" | bc)") |"
     if [ "$method" = neural ]; then
       { echo; echo "#### $label"; echo
-        "$bench" "$v"/assets/*.neural_histogram.*.mbk "$map" "$convention" repair; } >>"$work/kl.md"
+        "$bench" "$v"/assets/*.neural_histogram.*.mbk "$map" "$convention" repair |
+          sed -e "s|^map [^,]*|map $label|" -e 's/^| side | neural KL/\n&/'; } >>"$work/kl.md"
     fi
   done
   rm -rf "$d"
