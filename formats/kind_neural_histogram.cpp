@@ -127,8 +127,8 @@ AssetKind neural_histogram_kind() {
   k.id = kNeuralHistogramKindId;
   k.name = "neural_histogram";
   k.summary =
-      "adaptive theta x uniform phi bins, each texel's bin, a feature pyramid and MLPs predicting footprint "
-      "histograms (neural P-NDF)";
+      "theta x phi bins (adaptive or uniform theta), each texel's bin, a feature pyramid and MLPs predicting "
+      "footprint histograms (neural P-NDF)";
   k.required_sections = {{kHistogramThetaEdgesSection, {ElementType::f64}, 1},
                          {kHistogramThetaCentresSection, {ElementType::f64}, 1},
                          {kNeuralHistogramTexelBinsSection, {ElementType::u16}, 2},

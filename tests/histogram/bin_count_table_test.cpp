@@ -17,6 +17,7 @@
 #include "libbake/gen/generator.h"
 #include "libbake/histogram/bin_count_table.h"
 #include "libbake/histogram/histogram_asset.h"
+#include "tests/histogram/loaded_map.h"
 
 namespace mbk {
 namespace {
@@ -169,13 +170,7 @@ TEST(BinCountTable, TexelsBelowTheHorizonAreRefusedOrRepairedByTheDecoder) {
   }
 }
 
-LoadedNormalMap loaded(NormalMap map) {
-  LoadedNormalMap in;
-  in.map = std::move(map);
-  in.record.path = "generated";
-  in.record.content_hash = "xxh3:0123456789abcdef";
-  return in;
-}
+using test::loaded;
 
 std::vector<uint8_t> asset_bytes(const LoadedNormalMap& in, const HistogramBakeOptions& options) {
   const uint64_t seed = histogram_seed(in.record.content_hash);

@@ -19,17 +19,12 @@
 #include "libbake/histogram/neural_binned_ndf.h"
 #include "libbake/histogram/neural_histogram_asset.h"
 #include "libbake/histogram/neural_histogram_training.h"
+#include "tests/histogram/loaded_map.h"
 
 namespace mbk {
 namespace {
 
-LoadedNormalMap loaded(NormalMap map) {
-  LoadedNormalMap in;
-  in.map = std::move(map);
-  in.record.path = "generated";
-  in.record.content_hash = "xxh3:0123456789abcdef";
-  return in;
-}
+using test::loaded;
 
 NeuralHistogramBakeOptions quick_options(uint32_t iterations, uint32_t batch) {
   NeuralHistogramBakeOptions options;
