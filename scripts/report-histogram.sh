@@ -95,8 +95,8 @@ for s in "${scenes[@]}"; do
   done
 done
 echo
-echo "Bins and storage, full resolution, against the same reference (bake: every histogram asset of the scene,"
-echo "bytes: their sum):"
+echo "Bins and storage, full resolution, against the same reference (bake and bytes: every asset the scene bakes,"
+echo "its histogram assets and the mip baseline of each material):"
 echo
 echo "| scene | variant | bake (s) | asset bytes | effect render (s) | effect block L1 | floor | effect / floor |"
 echo "|---|---|---|---|---|---|---|---|"
