@@ -8,8 +8,9 @@
 # floor; the same per light; the environment alone at SH orders 10, 20, 40 and 60 (time and error), so the
 # order's cost and accuracy read side by side; and each variant of the bins and storage (adaptive or uniform theta
 # bins, [Shah24] Fig. 3) with its bake time, bytes and error against the same reference; then each map alone at
-# 512^2 and 1024^2 (generated, and real when ../shared is there) with the exact table and the neural histogram
-# (bake or training time, bytes, render time and error against its own reference), and each neural asset's
+# 512^2 and 1024^2 (generated, and real when ../shared is there) with the exact table, the neural histogram and the
+# MIP pyramid of histograms of the neural predictor's bytes (bake or training time, bytes, render time and error
+# against its own reference), and each neural asset's
 # histogram KL per footprint side next to a MIP pyramid of histograms of equal bytes (the non-neural baseline).
 #
 #   bash scripts/report-histogram.sh [BUILD_DIR] [RAYS]     # default build/ (a Release build), RAYS = 16
@@ -31,7 +32,9 @@ block_l1() { "$exe" compare "$1" "$2" --block 8 --format json | jq -r '.block_re
 
 # Variants of every histogram effect of a scene for the bins-and-storage table: name=JSON merged into the effect.
 variants=('adaptive={"theta_binning": "adaptive"}' 'uniform={"theta_binning": "uniform"}')
-methods=(exact neural)  # the histogram's storage in the map-size table (neural: the command's default training)
+# The histogram's storage in the map-size table (neural: the command's default training; pyramid: the exact asset
+# compressed at load to a MIP pyramid of histograms of the neural predictor's bytes, the non-neural baseline).
+methods=(exact neural pyramid)
 scenes=(histogram)
 [ -f ../shared/data/real/brushed_streaks_diagonal.png ] && scenes+=(histogram_real)
 for s in "${scenes[@]}"; do
@@ -151,14 +154,16 @@ for entry in "${sized_maps[@]}"; do
     jq --arg m "$method" '(.materials[].effects[] | select(.name == "histogram") | .method) = $m' "$d/scene.json" >"$v/scene.json"
     b=$(/usr/bin/time -f %e "$exe" bake "$v/scene.json" --out-dir "$v/assets" -q 2>&1 | tail -1)
     bytes=$(cat "$v"/assets/*histogram*.mbk | wc -c)
+    if [ "$method" = neural ]; then
+      "$bench" "$v"/assets/*.neural_histogram.*.mbk "$map" "$convention" repair >"$d/kl.txt"
+      { echo; echo "#### $label"; echo
+        sed -e "s|^map [^,]*|map $label|" -e 's/^| side | neural KL/\n&/' "$d/kl.txt"; } >>"$work/kl.md"
+    elif [ "$method" = pyramid ]; then  # the exact asset is baked; the render builds the pyramid in memory
+      bytes="$(sed -n 's/^baseline: \([0-9]*\) bytes.*/\1/p' "$d/kl.txt") in memory"
+    fi
     t=$("$exe" render "$v/scene.json" --assets "$v/assets" -o "$v/effect.exr" | seconds)
     e=$(block_l1 "$v/effect.exr" "$d/reference.exr")
     echo "| $label | $size | $method | $b | $bytes | $t | $e | $f | $(printf "%.1f" "$(echo "scale=3; $e / $f" | bc)") |"
-    if [ "$method" = neural ]; then
-      { echo; echo "#### $label"; echo
-        "$bench" "$v"/assets/*.neural_histogram.*.mbk "$map" "$convention" repair |
-          sed -e "s|^map [^,]*|map $label|" -e 's/^| side | neural KL/\n&/'; } >>"$work/kl.md"
-    fi
   done
   rm -rf "$d"
 done
@@ -167,3 +172,35 @@ echo "Histogram KL per footprint side of each neural asset above (tests/bench/ne
 echo "D_KL(exact || predicted) over 400 footprints per side, against a MIP pyramid of histograms of the model's bytes"
 echo "with trilinear interpolation, [DLW*22], and the whole map's histogram):"
 cat "$work/kl.md"
+
+# Accuracy against training time at 1024^2: one neural bake per target (1, 2, 5 and 15 minutes of wall time on this
+# machine), its iterations from the per-iteration time of two short calibration bakes (their difference removes the
+# exact table, k-means and held-out evaluation every bake pays once), then the same KL per side as above.
+if [ -f ../shared/data/real/brick_floor.png ]; then
+  curve_label=brick_floor curve_map="$(pwd)/../shared/data/real/brick_floor.png" curve_convention=-Y
+else
+  curve_label="scratches 1024" curve_map="$work/curve_map.png" curve_convention=+Y
+  "$exe" gen scratches --size 1024 --seed 1 -q -o "$curve_map"
+fi
+train() {  # ITERATIONS OUT.mbk: prints the wall seconds
+  /usr/bin/time -f %e "$exe" histogram --method neural "$curve_map" --convention "$curve_convention" --repair-invalid \
+    --iterations "$1" -q -o "$2" 2>&1 | tail -1
+}
+t_short=$(train 200 "$work/curve.mbk")
+t_long=$(train 1200 "$work/curve.mbk")
+per_iteration=$(echo "scale=6; ($t_long - $t_short) / 1000" | bc)
+fixed=$(echo "scale=3; $t_short - 200 * $per_iteration" | bc)
+echo
+echo "Accuracy against training time ($curve_label, 1024^2, 9 x 32 bins, F = 16, batch 512): one bake per target"
+echo "wall time, its iterations from two calibration bakes on this machine ($per_iteration s per iteration, $fixed s"
+echo "paid once per bake); mean D_KL(exact || predicted) per footprint side, 400 footprints each (the bench above):"
+echo
+echo "| target | iterations | wall (s) | 8 | 16 | 32 | 64 | 128 | 256 |"
+echo "|---|---|---|---|---|---|---|---|---|"
+for minutes in 1 2 5 15; do
+  iterations=$(echo "($minutes * 60 - $fixed) / $per_iteration" | bc)
+  wall=$(train "$iterations" "$work/curve.mbk")
+  "$bench" "$work/curve.mbk" "$curve_map" "$curve_convention" repair >"$work/curve.txt"
+  echo "| $minutes min | $iterations | $wall | $(awk -F'|' '/^\| [0-9]+ \|/ {printf "%s%.4f", sep, $3; sep=" | "}' "$work/curve.txt") |"
+done
+echo "| MIP of histograms (equal bytes) | | | $(awk -F'|' '/^\| [0-9]+ \|/ {printf "%s%.4f", sep, $4; sep=" | "}' "$work/curve.txt") |"

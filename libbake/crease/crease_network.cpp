@@ -59,7 +59,7 @@ struct CurveEnd {
 class CurveWalk {
  public:
   explicit CurveWalk(const CreaseField& field)
-      : field_(field), h(field.crossing_h.size()), v(field.crossing_v.size()), cells(field.segments.size()) {}
+      : h(field.crossing_h.size()), v(field.crossing_v.size()), cells(field.segments.size()), field_(field) {}
 
   // A polyline is walked as one path: a vertex inside a cell joins the piece coming in to the piece going out, so
   // the cell keeps a segment from its entry edge to its exit edge.

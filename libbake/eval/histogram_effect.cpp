@@ -15,6 +15,7 @@
 #include "libbake/eval/distant_radiance.h"
 #include "libbake/eval/roughness_texture.h"
 #include "libbake/histogram/binned_ndf_source.h"
+#include "libbake/histogram/histogram_pyramid_baseline.h"
 #include "libbake/histogram/neural_binned_ndf.h"
 #include "libbake/histogram/reflected_lobe.h"
 #include "libbake/histogram/roughness_lobe.h"
@@ -214,10 +215,20 @@ ShaderPtr histogram_effect_shader(const EffectShaderRequest& request) {
   data->common = common;
   const std::filesystem::path& file = request.assets.at(0);
   data->asset = request.cache.get<Asset>("asset|" + file.string(), [&] { return Asset::open(file); });
-  if (data->asset->kind().name == std::string_view("neural_histogram"))
+  if (data->asset->kind().name == std::string_view("neural_histogram")) {
     data->source = open_neural_histogram(*data->asset);
-  else
+  } else if (request.use.options.at("method") == "pyramid") {
+    HistogramAssetView view = histogram_asset_view(*data->asset);
+    const NeuralHistogramShape shape{view.table.width,
+                                     view.table.height,
+                                     view.bins.theta_bins(),
+                                     view.bins.phi_bins,
+                                     request.use.options.at("features").get<uint32_t>(),
+                                     kNeuralHistogramHidden};
+    data->source = std::make_unique<HistogramPyramidBaseline>(std::move(view), neural_predictor_bytes(shape));
+  } else {
     data->source = std::make_unique<ExactBinnedNdf>(histogram_asset_view(*data->asset));
+  }
   data->bin_normals = bin_directions(*data->source);
   const int order = request.use.options.at("sh_order").get<int>();
   const DistantRadiance distant = DistantRadiance::load(request.scene, request.cache);

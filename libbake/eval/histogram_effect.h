@@ -8,7 +8,8 @@
 //
 // filtered   P_b from the baked asset over the pixel's footprint: its anisotropic probes (uv_footprint.h), each a
 //            square of the probe's width in texels (binned_ndf_source.h), equally weighted; the exact integral images
-//            of a `histogram` asset or the network of a `neural_histogram` one (neural_binned_ndf.h).
+//            of a `histogram` asset, the network of a `neural_histogram` one (neural_binned_ndf.h), or with `method
+//            pyramid` a MIP pyramid of histograms built from the exact asset at load (histogram_pyramid_baseline.h).
 //            Point and directional lights: the material's BRDF with D replaced (microfacet_brdf.h evaluate_specular:
 //            F and G2 of the material, its f0 and base roughness).
 //            Distant light (environment maps and skies): L = sum_b P_b F(v.w_b) G2(n.r_b, n.v) (v.w_b) / (n.v)

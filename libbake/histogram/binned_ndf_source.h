@@ -51,6 +51,7 @@ class BinnedNdfSource {
 class ExactBinnedNdf : public BinnedNdfSource {
  public:
   explicit ExactBinnedNdf(HistogramAssetView view) : view_(std::move(view)) {}
+  const HistogramAssetView& view() const { return view_; }
   const HistogramBins& bins() const override { return view_.bins; }
   std::span<const double> theta_centres() const override { return view_.theta_centres; }
   uint32_t width() const override { return view_.table.width; }

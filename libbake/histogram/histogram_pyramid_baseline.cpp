@@ -36,7 +36,13 @@ uint64_t grid_texels(const PyramidGrid& grid) { return grid.level_offset.back();
 
 }  // namespace
 
-HistogramPyramidBaseline::HistogramPyramidBaseline(const BinCountTable& table, uint64_t bytes) : bins_(table.bins) {
+uint64_t neural_predictor_bytes(const NeuralHistogramShape& shape) {
+  return (shape.pyramid_texels() * shape.features + shape.mlp_parameters()) * 2;
+}
+
+HistogramPyramidBaseline::HistogramPyramidBaseline(HistogramAssetView view, uint64_t bytes)
+    : exact_(std::move(view)), bins_(exact_.bins().count()) {
+  const BinCountTable& table = exact_.view().table;
   const uint64_t per_texel = uint64_t(bins_) * 2;
   uint32_t n = 1;
   while (n < std::max(table.width, table.height) &&
@@ -63,8 +69,13 @@ HistogramPyramidBaseline::HistogramPyramidBaseline(const BinCountTable& table, u
   }
 }
 
-void HistogramPyramidBaseline::probabilities(double x, double y, double side, std::span<double> out) const {
-  const PyramidLookup lookup = pyramid_lookup(grid_, x, y, side);
+void HistogramPyramidBaseline::footprint_probabilities(const SquareFootprint& f, std::span<double> out) const {
+  const FootprintTexels t = square_footprint_texels(f);
+  if (t.w < kNeuralHistogramMinFootprint) {
+    exact_.footprint_probabilities(f, out);
+    return;
+  }
+  const PyramidLookup lookup = pyramid_lookup(grid_, f.x, f.y, double(t.w));
   std::fill(out.begin(), out.end(), 0.0);
   double sum = 0.0;
   for (int k = 0; k < 8; ++k) {

@@ -3,11 +3,14 @@
 // histogram asset only (`microbake histogram`, its method and bins); the roughness (a constant, or a texture that
 // the shader reads at shading time, so changing it needs no rebake) and the SH order of the distant lighting are the
 // shader's. Its evaluator side is libbake/eval/histogram_effect.h. Keys (docs/SCENES.md "Effect histogram"):
-//   method         "exact"  the histogram technique's --method (neural: kind neural_histogram, trained)
+//   method         "exact"  exact: the histogram technique's exact table; neural: its neural histogram (kind
+//                           neural_histogram, trained); pyramid: the exact table, compressed by the shader to a MIP
+//                           pyramid of histograms of the neural predictor's bytes (the non-neural baseline)
 //   theta_bins     9        the histogram technique's --theta-bins
 //   phi_bins       32       the histogram technique's --phi-bins
 //   theta_binning  adaptive the histogram technique's --theta-binning (uniform: the baseline of [Shah24] Fig. 3)
-//   features, iterations, batch, seed   the technique's neural training options (used by method neural only)
+//   features, iterations, batch, seed   the technique's neural training options (used by method neural; features
+//                           also sizes the pyramid's budget)
 //   roughness      0.05     intrinsic roughness sigma of every normal's lobe, radians, in [0.001, 1]
 //   roughness_map  (none)   an image whose first channel is sigma, relative to the scene file (overrides roughness)
 //   sh_order       20       SH order of the distant lighting the NDF is dotted with
@@ -46,8 +49,15 @@ std::vector<Parameter> histogram_parameters() {
   sh_order.doc = "SH order of the distant lighting the NDF is dotted with ([Shah24] Eq. 9)";
   // Scenes default to the exact table, which bakes in seconds up to 1024^2 (the command defaults to neural, which
   // trains for minutes whatever the map's size but scales to maps whose table would not fit).
-  Parameter method = scene_key(effect_parameter("histogram", "method", "method"));
+  Parameter method;
+  method.name = "method";
+  method.type = ParameterType::choice;
+  method.choices = {"exact", "neural", "pyramid"};
   method.default_value = "exact";
+  method.doc =
+      "The binned P-NDF the shader reads: exact (the histogram command's exact table), neural (its neural histogram, "
+      "[Shah24] Sec. 4.2) or pyramid (the exact table compressed at load to a MIP pyramid of histograms of the "
+      "neural predictor's bytes, [DLW*22]: the non-neural baseline)";
   return {method,
           scene_key(effect_parameter("histogram", "theta_bins", "theta_bins")),
           scene_key(effect_parameter("histogram", "phi_bins", "phi_bins")),
@@ -85,16 +95,18 @@ EffectInfo histogram_effect() {
     const HistogramBakeOptions options = histogram_bake_options(use.options);
     AssetRecipe recipe;
     recipe.inputs = {map};
-    recipe.parameters = {{"method", use.options.at("method")},
+    // pyramid reads the exact asset: the same file as method exact.
+    const std::string method = use.options.at("method") == "neural" ? "neural" : "exact";
+    recipe.parameters = {{"method", method},
                          {"theta_bins_requested", options.theta_bins},
                          {"phi_bins", options.phi_bins},
                          {"theta_binning", use.options.at("theta_binning")}};
     recipe.technique = "histogram";
-    recipe.technique_values = {{"method", use.options.at("method")},
+    recipe.technique_values = {{"method", method},
                                {"theta_bins", options.theta_bins},
                                {"phi_bins", options.phi_bins},
                                {"theta_binning", use.options.at("theta_binning")}};
-    if (use.options.at("method") == "neural") {
+    if (method == "neural") {
       const NeuralHistogramBakeOptions neural = neural_histogram_bake_options(use.options);
       recipe.kind = "neural_histogram";
       for (const char* key : {"features", "iterations", "batch"})

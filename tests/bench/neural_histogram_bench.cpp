@@ -39,8 +39,9 @@ int main(int argc, char** argv) try {
     throw Error(ExitCode::invalid_input, "the map's bins differ from the asset's: another map or convention?");
   const ExactBinnedNdf exact({exact_baked.bins, exact_baked.theta.centres, exact_baked.table()});
   const NeuralHistogramShape shape = neural_histogram_asset_view(asset).shape;
-  const uint64_t model_bytes = (shape.pyramid_texels() * shape.features + shape.mlp_parameters()) * 2;
-  const HistogramPyramidBaseline baseline(exact_baked.table(), model_bytes);
+  const uint64_t model_bytes = neural_predictor_bytes(shape);
+  const HistogramPyramidBaseline baseline({exact_baked.bins, exact_baked.theta.centres, exact_baked.table()},
+                                          model_bytes);
   const uint64_t file_bytes = asset.header().file_size;
   const uint64_t table_bytes = histogram_table_bytes(shape.width, shape.height, exact_baked.bins.count());
 
@@ -69,7 +70,7 @@ int main(int argc, char** argv) try {
       exact.footprint_probabilities(f, truth);
       neural->footprint_probabilities(f, q);
       kl_neural += histogram_kl(truth, q) / kFootprints;
-      baseline.probabilities(f.x, f.y, side, q);
+      baseline.footprint_probabilities(f, q);
       kl_baseline += histogram_kl(truth, q) / kFootprints;
       kl_whole += histogram_kl(truth, whole) / kFootprints;
     }

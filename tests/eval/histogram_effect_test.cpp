@@ -218,6 +218,34 @@ TEST(HistogramEffect, NeuralHistogramRendersNearTheExactTable) {
   EXPECT_LT(e_neural, e_exact + 0.02);
 }
 
+// The non-neural baseline behind the same shader: `method pyramid` bakes the exact asset (the very file of `method
+// exact`), compresses it at load to a MIP pyramid of histograms of the neural predictor's bytes, and renders near
+// the reference, no further from it than the same margin as the neural histogram beyond the exact table.
+TEST(HistogramEffect, PyramidBaselineReadsTheExactAssetAndRendersNearIt) {
+  ScratchDir dir("histogram_effect_pyramid");
+  write_inputs(dir.path());
+  const auto tiled = [&](const json& effect) {
+    json s = plane_scene(effect);
+    s["shapes"][0]["uv_scale"] = {24, 24};
+    testing::write_json(dir / "s.json", s);
+    return load_scene(dir / "s.json");
+  };
+  const Scene exact = tiled({{"name", "histogram"}, {"sh_order", 40}});
+  const Scene pyramid = tiled({{"name", "histogram"}, {"sh_order", 40}, {"method", "pyramid"}});
+  std::vector<std::string> files;
+  for (const PlannedAsset& a : plan_assets(exact)) files.push_back(a.file_name);
+  for (size_t i = 0; const PlannedAsset& a : plan_assets(pyramid)) EXPECT_EQ(a.file_name, files.at(i++));
+  bake_scene(exact);
+  const Image reference = render(exact, 1, 8), exact_image = render(exact, 1), pyramid_image = render(pyramid, 1);
+  const double e_exact = compare_images(exact_image, reference, 8).block_relative_l1;
+  const double e_pyramid = compare_images(pyramid_image, reference, 8).block_relative_l1;
+  const double apart = compare_images(pyramid_image, exact_image, 8).block_relative_l1;
+  std::printf("[ info ] block L1 against the reference: exact %.4f, pyramid %.4f; pyramid vs exact %.4f\n", e_exact,
+              e_pyramid, apart);
+  EXPECT_GT(apart, 0.0);  // the pyramid was read
+  EXPECT_LT(e_pyramid, e_exact + 0.02);
+}
+
 TEST(HistogramEffect, RoughnessTextureNeedsNoRebakeAndMatchesItsReference) {
   ScratchDir dir("histogram_effect_roughness");
   write_inputs(dir.path());
