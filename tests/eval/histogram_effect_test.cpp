@@ -186,36 +186,48 @@ TEST(HistogramEffect, MatchesItsReferenceUnderAnEnvironmentAndAPointLight) {
   EXPECT_LT(e.effect, 2.0 * e.floor + 0.005);
 }
 
+// The plane scene with the map tiled 24 times across it (written to dir/file), so that most footprints span 8 texels
+// or more and read a compressed source's prediction (smaller ones are counted exactly).
+Scene tiled_plane(const ScratchDir& dir, const std::string& file, const json& effect) {
+  json s = plane_scene(effect);
+  s["shapes"][0]["uv_scale"] = {24, 24};
+  testing::write_json(dir / file, s);
+  return load_scene(dir / file);
+}
+
+// Block L1 of the exact table's render and of another source's against the exact scene's 8 x 8-ray reference, and
+// between the two renders.
+struct AgainstExact {
+  double exact = 0, other = 0, apart = 0;
+};
+AgainstExact block_l1_against_exact(const Scene& exact, const Scene& other, const char* what) {
+  bake_scene(exact);
+  bake_scene(other);
+  const Image reference = render(exact, 1, 8), exact_image = render(exact, 1), other_image = render(other, 1);
+  const AgainstExact e{compare_images(exact_image, reference, 8).block_relative_l1,
+                       compare_images(other_image, reference, 8).block_relative_l1,
+                       compare_images(other_image, exact_image, 8).block_relative_l1};
+  std::printf("[ info ] block L1 against the reference: exact %.4f, %s %.4f; %s vs exact %.4f\n", e.exact, what,
+              e.other, what, e.apart);
+  return e;
+}
+
 // The neural histogram behind the same shader: a short training on the 64^2 scratches map bakes only the
 // neural_histogram asset, and its render stays near the reference, no further from it than a stated margin beyond
 // the exact table's render (what a few hundred Adam steps cost).
 TEST(HistogramEffect, NeuralHistogramRendersNearTheExactTable) {
   ScratchDir dir("histogram_effect_neural");
   write_inputs(dir.path());
-  // The map tiled 24 times across the plane, so that most footprints span 8 texels or more and read the network
-  // (smaller ones count the stored texel bins exactly).
-  const auto tiled = [&](const json& effect) {
-    json s = plane_scene(effect);
-    s["shapes"][0]["uv_scale"] = {24, 24};
-    testing::write_json(dir / "s.json", s);
-    return load_scene(dir / "s.json");
-  };
-  const Scene exact = tiled({{"name", "histogram"}, {"sh_order", 40}});
+  const Scene exact = tiled_plane(dir, "exact.json", {{"name", "histogram"}, {"sh_order", 40}});
   const Scene neural =
-      tiled({{"name", "histogram"}, {"sh_order", 40}, {"method", "neural"}, {"iterations", 400}, {"batch", 256}});
+      tiled_plane(dir, "neural.json",
+                  {{"name", "histogram"}, {"sh_order", 40}, {"method", "neural"}, {"iterations", 400}, {"batch", 256}});
   std::vector<std::string> kinds;
   for (const PlannedAsset& a : plan_assets(neural)) kinds.push_back(a.recipe.kind);
   EXPECT_EQ(kinds, (std::vector<std::string>{"neural_histogram", "mip"}));
-  bake_scene(exact);
-  bake_scene(neural);
-  const Image reference = render(exact, 1, 8), exact_image = render(exact, 1), neural_image = render(neural, 1);
-  const double e_exact = compare_images(exact_image, reference, 8).block_relative_l1;
-  const double e_neural = compare_images(neural_image, reference, 8).block_relative_l1;
-  const double apart = compare_images(neural_image, exact_image, 8).block_relative_l1;
-  std::printf("[ info ] block L1 against the reference: exact %.4f, neural (400 steps) %.4f; neural vs exact %.4f\n",
-              e_exact, e_neural, apart);
-  EXPECT_GT(apart, 0.0);  // the network was read
-  EXPECT_LT(e_neural, e_exact + 0.02);
+  const AgainstExact e = block_l1_against_exact(exact, neural, "neural (400 steps)");
+  EXPECT_GT(e.apart, 0.0);  // the network was read
+  EXPECT_LT(e.other, e.exact + 0.02);
 }
 
 // The non-neural baseline behind the same shader: `method pyramid` bakes the exact asset (the very file of `method
@@ -224,26 +236,15 @@ TEST(HistogramEffect, NeuralHistogramRendersNearTheExactTable) {
 TEST(HistogramEffect, PyramidBaselineReadsTheExactAssetAndRendersNearIt) {
   ScratchDir dir("histogram_effect_pyramid");
   write_inputs(dir.path());
-  const auto tiled = [&](const json& effect) {
-    json s = plane_scene(effect);
-    s["shapes"][0]["uv_scale"] = {24, 24};
-    testing::write_json(dir / "s.json", s);
-    return load_scene(dir / "s.json");
-  };
-  const Scene exact = tiled({{"name", "histogram"}, {"sh_order", 40}});
-  const Scene pyramid = tiled({{"name", "histogram"}, {"sh_order", 40}, {"method", "pyramid"}});
+  const Scene exact = tiled_plane(dir, "exact.json", {{"name", "histogram"}, {"sh_order", 40}});
+  const Scene pyramid =
+      tiled_plane(dir, "pyramid.json", {{"name", "histogram"}, {"sh_order", 40}, {"method", "pyramid"}});
   std::vector<std::string> files;
   for (const PlannedAsset& a : plan_assets(exact)) files.push_back(a.file_name);
   for (size_t i = 0; const PlannedAsset& a : plan_assets(pyramid)) EXPECT_EQ(a.file_name, files.at(i++));
-  bake_scene(exact);
-  const Image reference = render(exact, 1, 8), exact_image = render(exact, 1), pyramid_image = render(pyramid, 1);
-  const double e_exact = compare_images(exact_image, reference, 8).block_relative_l1;
-  const double e_pyramid = compare_images(pyramid_image, reference, 8).block_relative_l1;
-  const double apart = compare_images(pyramid_image, exact_image, 8).block_relative_l1;
-  std::printf("[ info ] block L1 against the reference: exact %.4f, pyramid %.4f; pyramid vs exact %.4f\n", e_exact,
-              e_pyramid, apart);
-  EXPECT_GT(apart, 0.0);  // the pyramid was read
-  EXPECT_LT(e_pyramid, e_exact + 0.02);
+  const AgainstExact e = block_l1_against_exact(exact, pyramid, "pyramid");
+  EXPECT_GT(e.apart, 0.0);  // the pyramid was read
+  EXPECT_LT(e.other, e.exact + 0.02);
 }
 
 TEST(HistogramEffect, RoughnessTextureNeedsNoRebakeAndMatchesItsReference) {
