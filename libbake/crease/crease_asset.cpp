@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "formats/error.h"
+#include "libbake/core/parallel.h"
 #include "libbake/crease/gradient_smoothing.h"
 
 namespace mbk {
@@ -33,8 +34,10 @@ BakedCrease bake_crease(const NormalMap& map, const CurveSet& curves, const Crea
   BakedCrease baked;
   CreaseField& f = baked.field;
   f.allocate(map.width, map.height);
-  for (size_t k = 0; k < map.texels.size(); ++k)
-    for (int c = 0; c < 3; ++c) f.normals[3 * k + size_t(c)] = map.texels[k][c];
+  parallel_for(0, map.height, [&](int64_t row) {
+    for (size_t k = size_t(row) * map.width; k < size_t(row + 1) * map.width; ++k)
+      for (int c = 0; c < 3; ++c) f.normals[3 * k + size_t(c)] = map.texels[k][c];
+  });
   baked.simplify = simplify_curves(curves, f);
   const std::vector<CurveSegment> network = network_segments(f);
   baked.network_segments = network.size();

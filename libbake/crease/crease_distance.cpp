@@ -43,6 +43,7 @@ class NearestSegments {
   // Brute force over each segment's bounding box grown by the band, rows in parallel: each row takes the segments
   // whose box covers it.
   void offer_within(double band) {
+    settled_below_ = band - 1e-6;
     struct Box {
       int64_t i0, i1, j0, j1;
     };
@@ -97,17 +98,23 @@ class NearestSegments {
       nearest_[k] = s;
     }
   }
-  // Offers sample (i, j) the nearest segment of sample (ni, nj), if that is inside and has one.
+  // Offers sample (i, j) the nearest segment of sample (ni, nj), if that is inside, has one, and the offer can
+  // change anything: not when (i, j) already holds that segment (the same distance again), nor when (i, j) is
+  // settled - its distance under the band (less a margin far above rounding), so that every segment as near was
+  // offered by offer_within and the smallest index of the nearest already won.
   void take(int64_t i, int64_t j, int64_t ni, int64_t nj) {
     if (ni < 0 || nj < 0 || ni >= nx_ || nj >= ny_) return;
+    const size_t k = size_t(j * nx_ + i);
+    if (dist_[k] < settled_below_) return;
     const int64_t s = nearest_[size_t(nj * nx_ + ni)];
-    if (s >= 0) offer(i, j, s);
+    if (s >= 0 && s != nearest_[k]) offer(i, j, s);
   }
 
   const std::vector<CurveSegment>& segments_;
   int64_t nx_, ny_;
   std::vector<double> dist_;
   std::vector<int64_t> nearest_;
+  double settled_below_ = 0.0;  // set by offer_within: samples nearer than this to a segment are final
 };
 
 }  // namespace

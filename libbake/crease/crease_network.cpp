@@ -6,6 +6,8 @@
 #include <cmath>
 #include <map>
 
+#include "libbake/core/parallel.h"
+
 namespace mbk {
 namespace {
 
@@ -171,8 +173,9 @@ void merge_edge_crossings(const std::vector<EdgeCrossings>& in, std::vector<floa
 }
 
 // Each cell's signature: its best-supported edge pairs (the most pieces; ties in pair order), at most
-// kCreaseMaxSegmentsPerCell of them, each with the direction most of its pieces ran.
-uint16_t cell_signature(const CellPieces& cell, SimplifyStatistics& stats) {
+// kCreaseMaxSegmentsPerCell of them, each with the direction most of its pieces ran; counts the pairs it deletes.
+uint16_t cell_signature(const CellPieces& cell, uint64_t& deleted_segments) {
+  if (cell.count == std::array<uint32_t, 6>{}) return 0;  // most cells: no curve passes
   std::array<int, 6> order = {0, 1, 2, 3, 4, 5};
   std::stable_sort(order.begin(), order.end(),
                    [&](int a, int b) { return cell.count[size_t(a)] > cell.count[size_t(b)]; });
@@ -181,7 +184,7 @@ uint16_t cell_signature(const CellPieces& cell, SimplifyStatistics& stats) {
   for (int bit : order) {
     if (!cell.count[size_t(bit)]) break;
     if (kept == kCreaseMaxSegmentsPerCell) {
-      ++stats.deleted_segments;
+      ++deleted_segments;
       continue;
     }
     mask |= uint16_t(1u << bit);
@@ -200,28 +203,45 @@ SimplifyStatistics simplify_curves(const CurveSet& curves, CreaseField& field) {
   walk.join_curve_ends();
   merge_edge_crossings(walk.h, field.crossing_h, stats);
   merge_edge_crossings(walk.v, field.crossing_v, stats);
-  for (size_t c = 0; c < walk.cells.size(); ++c) {
-    field.segments[c] = cell_signature(walk.cells[c], stats);
-    if (field.segments[c]) ++stats.cells_with_segments;
+  // Signatures by rows in parallel; each row counts its own, summed in row order.
+  const uint32_t cells_x = field.cells_x();
+  std::vector<uint64_t> row_deleted(field.cells_y(), 0), row_with_segments(field.cells_y(), 0);
+  parallel_for(0, field.cells_y(), [&](int64_t j) {
+    for (uint32_t i = 0; i < cells_x; ++i) {
+      const size_t c = field.cell_index(i, uint32_t(j));
+      field.segments[c] = cell_signature(walk.cells[c], row_deleted[size_t(j)]);
+      row_with_segments[size_t(j)] += field.segments[c] != 0;
+    }
+  });
+  for (size_t j = 0; j < row_deleted.size(); ++j) {
+    stats.deleted_segments += row_deleted[j];
+    stats.cells_with_segments += row_with_segments[j];
   }
   return stats;
 }
 
 std::vector<CurveSegment> network_segments(const CreaseField& field) {
-  std::vector<CurveSegment> out;
-  for (uint32_t j = 0; j < field.cells_y(); ++j)
+  // Rows in parallel, each into its own list, joined in row order (the same list whatever the thread count).
+  std::vector<std::vector<CurveSegment>> rows(field.cells_y());
+  parallel_for(0, field.cells_y(), [&](int64_t j) {
     for (uint32_t i = 0; i < field.cells_x(); ++i) {
-      const CreaseCellEdges c = crease_cell_edges(field, i, j);
-      if (!(c.mask & kCreaseSegmentBits)) continue;
+      if (!(field.segments[field.cell_index(i, uint32_t(j))] & kCreaseSegmentBits)) continue;
+      const CreaseCellEdges c = crease_cell_edges(field, i, uint32_t(j));
       const Vec2 origin(double(i) - 0.5, double(j) - 0.5);
       for (int bit = 0; bit < 6; ++bit) {
         if (!(c.mask & (1u << bit))) continue;
         const int a = kCreasePairFirst[bit], b = kCreasePairSecond[bit];
         Vec2 pa = origin + Vec2(c.px[a], c.py[a]), pb = origin + Vec2(c.px[b], c.py[b]);
         if (c.mask & (1u << (8 + bit))) std::swap(pa, pb);
-        out.push_back({pa, pb});
+        rows[size_t(j)].push_back({pa, pb});
       }
     }
+  });
+  size_t total = 0;
+  for (const auto& row : rows) total += row.size();
+  std::vector<CurveSegment> out;
+  out.reserve(total);
+  for (const auto& row : rows) out.insert(out.end(), row.begin(), row.end());
   return out;
 }
 

@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
+#include "libbake/core/parallel.h"
 #include "libbake/crease/crease_distance.h"
 #include "libbake/crease/crease_network.h"
 #include "libbake/crease/gradient_smoothing.h"
@@ -45,6 +47,41 @@ TEST(CreaseDistance, ExactWithinBandUpperBoundBeyond) {
     }
   RecordProperty("worst_propagation_error", std::to_string(worst_beyond));
   EXPECT_LT(worst_beyond, 0.5);  // the propagated candidate is never far from the nearest
+}
+
+TEST(CreaseDistance, InsideTheBandEverySampleKeepsTheSmallestIndexOfItsNearestWhateverTheThreadCount) {
+  // A dense network at a realistic size (its segments share end points, so ties between neighbours are common):
+  // inside the band the side map is that of the nearest segment with the smallest index (brute force over every
+  // segment), which the propagation beyond the band must never change; 1 and 2 threads store the same maps.
+  const uint32_t w = 160, h = 120;
+  const double band = 2.5;
+  CreaseField one, two;
+  one.allocate(w, h);
+  simplify_curves(test::curves_of(random_segments(w, h, 120, 11)), one);
+  two = one;
+  const std::vector<CurveSegment> network = network_segments(one);
+  set_thread_count(1);
+  compute_distance_maps(network, band, one, Progress::silent());
+  set_thread_count(2);
+  compute_distance_maps(network, band, two, Progress::silent());
+  set_thread_count(0);
+  EXPECT_EQ(one.distance, two.distance);
+  EXPECT_EQ(one.gradient, two.gradient);
+  EXPECT_EQ(one.side, two.side);
+  size_t checked = 0;
+  for (uint32_t j = 0; j < one.samples_y(); ++j)
+    for (uint32_t i = 0; i < one.samples_x(); ++i) {
+      const Vec2 p(i - 0.5, j - 0.5);
+      double nearest = std::numeric_limits<double>::infinity();
+      size_t s = 0;
+      for (size_t k = 0; k < network.size(); ++k)
+        if (const double d = segment_distance(network[k], p); d < nearest) nearest = d, s = k;
+      if (nearest > band || nearest < 1e-9) continue;
+      const Vec2 dir = network[s].b - network[s].a, q = p - network[s].a;
+      EXPECT_EQ(one.side[one.sample_index(i, j)], dir.x() * q.y() - dir.y() * q.x() >= 0.0 ? 1 : -1) << i << "," << j;
+      ++checked;
+    }
+  EXPECT_GT(checked, size_t(w * h / 2));
 }
 
 TEST(CreaseDistance, GradientPointsAwayFromNearestPointAndSideFollowsDirection) {
