@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 
+#include "libbake/core/grouped_by_key.h"
 #include "libbake/core/parallel.h"
 
 namespace mbk {
@@ -25,6 +26,19 @@ struct EdgeCrossings {
 struct CellPieces {
   std::array<uint32_t, 6> count{};
   std::array<int64_t, 6> direction{};  // +1 per piece running first -> second edge of the pair, -1 reversed
+};
+
+// One crossing of a cell edge by a curve, as the walk meets it.
+struct EdgeCrossing {
+  size_t edge;
+  double t;
+};
+
+// One piece of curve through a cell, from one of its edges to another, as the walk meets it.
+struct CellPiece {
+  size_t cell;
+  int8_t bit;        // the edge pair (crease_pair_bit)
+  int8_t direction;  // +1 running from the pair's first edge to its second, -1 reversed
 };
 
 struct LineCrossing {
@@ -56,12 +70,12 @@ struct CurveEnd {
   bool outgoing;  // the curve starts here
 };
 
-// Walks the curves through the cells: records every crossing of a cell edge and, per cell, the pieces of curve
-// from the edge it entered by to the edge it left by (by edge pair), and where open curves end.
+// Walks the curves through the cells: records every crossing of a cell edge and every piece of curve through a
+// cell, from the edge it entered by to the edge it left by, in the order it meets them (lists rather than per-cell
+// accumulators: most cells see no curve), and where open curves end.
 class CurveWalk {
  public:
-  explicit CurveWalk(const CreaseField& field)
-      : h(field.crossing_h.size()), v(field.crossing_v.size()), cells(field.segments.size()), field_(field) {}
+  explicit CurveWalk(const CreaseField& field) : field_(field) {}
 
   // A polyline is walked as one path: a vertex inside a cell joins the piece coming in to the piece going out, so
   // the cell keeps a segment from its entry edge to its exit edge.
@@ -101,17 +115,16 @@ class CurveWalk {
         }
   }
 
-  std::vector<EdgeCrossings> h, v;  // per horizontal / vertical cell edge
-  std::vector<CellPieces> cells;
+  std::vector<EdgeCrossing> h, v;  // crossings of horizontal / vertical cell edges
+  std::vector<CellPiece> pieces;
   std::map<std::pair<double, double>, std::vector<CurveEnd>> ends;  // by end point
 
  private:
   void add_piece(int64_t x, int64_t y, int from, int to) {
     const int bit = crease_pair_bit(from, to);
     if (bit < 0) return;  // left through the edge it came in by (a polyline folding back): no segment
-    CellPieces& p = cells[field_.cell_index(uint32_t(x), uint32_t(y))];
-    ++p.count[size_t(bit)];
-    p.direction[size_t(bit)] += kCreasePairFirst[bit] == from ? 1 : -1;
+    pieces.push_back(
+        {field_.cell_index(uint32_t(x), uint32_t(y)), int8_t(bit), int8_t(kCreasePairFirst[bit] == from ? 1 : -1)});
   }
 
   void walk_segment(const CurveSegment& seg, SimplifyStatistics& stats) {
@@ -136,13 +149,15 @@ class CurveWalk {
         exit = right ? 1 : 3;
         next_entry = right ? 3 : 1;
         nx += right ? 1 : -1;
-        v[field_.v_edge_index(uint32_t(right ? cx_ + 1 : cx_), uint32_t(cy_))].add(clamp_t(y - (double(cy_) - 0.5)));
+        v.push_back(
+            {field_.v_edge_index(uint32_t(right ? cx_ + 1 : cx_), uint32_t(cy_)), clamp_t(y - (double(cy_) - 0.5))});
       } else {
         const bool down = dy > 0.0;
         exit = down ? 2 : 0;
         next_entry = down ? 0 : 2;
         ny += down ? 1 : -1;
-        h[field_.h_edge_index(uint32_t(cx_), uint32_t(down ? cy_ + 1 : cy_))].add(clamp_t(x - (double(cx_) - 0.5)));
+        h.push_back(
+            {field_.h_edge_index(uint32_t(cx_), uint32_t(down ? cy_ + 1 : cy_)), clamp_t(x - (double(cx_) - 0.5))});
       }
       ++stats.input_crossings;
       if (entry_ >= 0) add_piece(cx_, cy_, entry_, exit);
@@ -160,22 +175,37 @@ class CurveWalk {
   int first_exit_ = -1;      // the edge through which the curve left its first cell
 };
 
-// Each crossed edge's crossing: the mean of the curves' crossings there (merged when several cross it).
-void merge_edge_crossings(const std::vector<EdgeCrossings>& in, std::vector<float>& out, SimplifyStatistics& stats) {
-  for (size_t e = 0; e < in.size(); ++e) {
-    if (!in[e].count) continue;
-    const float t = float(clamp_t(in[e].sum / in[e].count));
-    out[e] = std::clamp(t, kCreaseMinT, 1.0f - kCreaseMinT);
-    ++stats.crossed_edges;
-    if (in[e].count > 1) ++stats.merged_edges;
-    stats.max_merge_shift = std::max({stats.max_merge_shift, std::abs(in[e].min - t), std::abs(in[e].max - t)});
+// Each crossed edge's crossing: the mean of the curves' crossings there (merged when several cross it), summed in
+// the walk's order. Blocks of edges in parallel, their statistics added in block order.
+void merge_edge_crossings(const std::vector<EdgeCrossing>& crossings, std::vector<float>& out,
+                          SimplifyStatistics& stats) {
+  const GroupedByKey<EdgeCrossing> by_edge =
+      group_by_key(crossings, out.size(), [](const EdgeCrossing& c) { return c.edge; });
+  constexpr size_t kBlock = 4096;
+  std::vector<SimplifyStatistics> block_stats((out.size() + kBlock - 1) / kBlock);
+  parallel_for(0, int64_t(block_stats.size()), [&](int64_t b) {
+    SimplifyStatistics& s = block_stats[size_t(b)];
+    for (size_t e = size_t(b) * kBlock; e < std::min(out.size(), size_t(b + 1) * kBlock); ++e) {
+      if (by_edge.begin(e) == by_edge.end(e)) continue;
+      EdgeCrossings in;
+      for (size_t r = by_edge.begin(e); r < by_edge.end(e); ++r) in.add(by_edge.records[r].t);
+      const float t = float(clamp_t(in.sum / in.count));
+      out[e] = std::clamp(t, kCreaseMinT, 1.0f - kCreaseMinT);
+      ++s.crossed_edges;
+      if (in.count > 1) ++s.merged_edges;
+      s.max_merge_shift = std::max({s.max_merge_shift, std::abs(in.min - t), std::abs(in.max - t)});
+    }
+  });
+  for (const SimplifyStatistics& s : block_stats) {
+    stats.crossed_edges += s.crossed_edges;
+    stats.merged_edges += s.merged_edges;
+    stats.max_merge_shift = std::max(stats.max_merge_shift, s.max_merge_shift);
   }
 }
 
 // Each cell's signature: its best-supported edge pairs (the most pieces; ties in pair order), at most
 // kCreaseMaxSegmentsPerCell of them, each with the direction most of its pieces ran; counts the pairs it deletes.
 uint16_t cell_signature(const CellPieces& cell, uint64_t& deleted_segments) {
-  if (cell.count == std::array<uint32_t, 6>{}) return 0;  // most cells: no curve passes
   std::array<int, 6> order = {0, 1, 2, 3, 4, 5};
   std::stable_sort(order.begin(), order.end(),
                    [&](int a, int b) { return cell.count[size_t(a)] > cell.count[size_t(b)]; });
@@ -204,12 +234,21 @@ SimplifyStatistics simplify_curves(const CurveSet& curves, CreaseField& field) {
   merge_edge_crossings(walk.h, field.crossing_h, stats);
   merge_edge_crossings(walk.v, field.crossing_v, stats);
   // Signatures by rows in parallel; each row counts its own, summed in row order.
+  const GroupedByKey<CellPiece> by_cell =
+      group_by_key(walk.pieces, field.segments.size(), [](const CellPiece& p) { return p.cell; });
   const uint32_t cells_x = field.cells_x();
   std::vector<uint64_t> row_deleted(field.cells_y(), 0), row_with_segments(field.cells_y(), 0);
   parallel_for(0, field.cells_y(), [&](int64_t j) {
     for (uint32_t i = 0; i < cells_x; ++i) {
       const size_t c = field.cell_index(i, uint32_t(j));
-      field.segments[c] = cell_signature(walk.cells[c], row_deleted[size_t(j)]);
+      field.segments[c] = 0;
+      if (by_cell.begin(c) == by_cell.end(c)) continue;  // most cells: no curve passes
+      CellPieces cell;
+      for (size_t r = by_cell.begin(c); r < by_cell.end(c); ++r) {
+        ++cell.count[size_t(by_cell.records[r].bit)];
+        cell.direction[size_t(by_cell.records[r].bit)] += by_cell.records[r].direction;
+      }
+      field.segments[c] = cell_signature(cell, row_deleted[size_t(j)]);
       row_with_segments[size_t(j)] += field.segments[c] != 0;
     }
   });
