@@ -40,15 +40,16 @@ class NearestSegments {
   const std::vector<double>& distances() const { return dist_; }
   int64_t nearest(size_t k) const { return nearest_[k]; }
 
-  // Brute force over each segment's bounding box grown by the band, rows in parallel: each row takes the segments
-  // whose box covers it.
+  // Brute force over each segment's bounding box grown by the band, bands of rows in parallel: each band takes the
+  // segments whose box meets it (the result does not depend on the order of the offers).
   void offer_within(double band) {
     settled_below_ = band - 1e-6;
     struct Box {
       int64_t i0, i1, j0, j1;
     };
+    constexpr int64_t kBandRows = 16;
     std::vector<Box> boxes(segments_.size());
-    std::vector<std::vector<int64_t>> row_segments(static_cast<size_t>(ny_));
+    std::vector<std::vector<int64_t>> band_segments(size_t((ny_ + kBandRows - 1) / kBandRows));
     for (size_t s = 0; s < segments_.size(); ++s) {
       const CurveSegment& seg = segments_[s];
       Box& b = boxes[s];
@@ -56,11 +57,16 @@ class NearestSegments {
       b.i1 = std::min<int64_t>(nx_ - 1, int64_t(std::floor(std::max(seg.a.x(), seg.b.x()) + band + 0.5)));
       b.j0 = std::max<int64_t>(0, int64_t(std::ceil(std::min(seg.a.y(), seg.b.y()) - band + 0.5)));
       b.j1 = std::min<int64_t>(ny_ - 1, int64_t(std::floor(std::max(seg.a.y(), seg.b.y()) + band + 0.5)));
-      for (int64_t j = b.j0; j <= b.j1; ++j) row_segments[size_t(j)].push_back(int64_t(s));
+      if (b.i0 > b.i1 || b.j0 > b.j1) continue;
+      for (int64_t r = b.j0 / kBandRows; r <= b.j1 / kBandRows; ++r) band_segments[size_t(r)].push_back(int64_t(s));
     }
-    parallel_for(0, ny_, [&](int64_t j) {
-      for (int64_t s : row_segments[size_t(j)])
-        for (int64_t i = boxes[size_t(s)].i0; i <= boxes[size_t(s)].i1; ++i) offer(i, j, s);
+    parallel_for(0, int64_t(band_segments.size()), [&](int64_t r) {
+      const int64_t first = r * kBandRows, last = std::min(ny_, first + kBandRows) - 1;
+      for (int64_t s : band_segments[size_t(r)]) {
+        const Box& b = boxes[size_t(s)];
+        for (int64_t j = std::max(first, b.j0); j <= std::min(last, b.j1); ++j)
+          for (int64_t i = b.i0; i <= b.i1; ++i) offer(i, j, s);
+      }
     });
   }
 
