@@ -9,9 +9,9 @@
 # order's cost and accuracy read side by side; and each variant of the bins and storage (adaptive or uniform theta
 # bins, [Shah24] Fig. 3) with its bake time, bytes and error against the same reference; then each map alone at
 # 512^2 and 1024^2 (generated, and real when ../shared is there) with the exact table, the neural histogram and the
-# MIP pyramid of histograms of the neural predictor's bytes (bake or training time, bytes, render time and error
-# against its own reference), and each neural asset's
-# histogram KL per footprint side next to a MIP pyramid of histograms of equal bytes (the non-neural baseline).
+# MIP pyramid of histograms of the neural predictor's bytes (bake or training time, bytes, render time, block L1 and
+# RMSE against its own reference), each neural asset's histogram KL per footprint side next to that pyramid (the
+# non-neural baseline of equal bytes), and the neural histogram's accuracy against training time (1, 2, 5, 15 min).
 #
 #   bash scripts/report-histogram.sh [BUILD_DIR] [RAYS]     # default build/ (a Release build), RAYS = 16
 set -euo pipefail
@@ -29,6 +29,7 @@ out=examples/results/histogram
 mkdir -p "$out"
 seconds() { sed -n 's/^rendered .*, \([0-9.]*\) s$/\1/p' | head -1; }
 block_l1() { "$exe" compare "$1" "$2" --block 8 --format json | jq -r '.block_relative_l1 * 10000 | round / 10000'; }
+rmse() { "$exe" compare "$1" "$2" --format json | jq -r '.rmse * 10000 | round / 10000'; }
 
 # Variants of every histogram effect of a scene for the bins-and-storage table: name=JSON merged into the effect.
 variants=('adaptive={"theta_binning": "adaptive"}' 'uniform={"theta_binning": "uniform"}')
@@ -121,10 +122,10 @@ done
 echo
 echo "Map sizes: each map alone on the plane of the generated scene (its roughness texture, the environment and the"
 echo "point light), tiled 20 x 20 so that footprints span 8 texels or more, against its own reference and floor; bake"
-echo "(training) time and bytes of its histogram asset:"
+echo "(training) time and bytes of its histogram asset; RMSE per pixel beside the block L1, each with its floor:"
 echo
-echo "| map | size | method | bake (s) | asset bytes | effect render (s) | effect block L1 | floor | effect / floor |"
-echo "|---|---|---|---|---|---|---|---|---|"
+echo "| map | size | method | bake (s) | asset bytes | effect render (s) | effect block L1 | floor | effect / floor | RMSE | RMSE floor |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|"
 sized_maps=("scratches 512=gen:512" "scratches 1024=gen:1024")
 [ -f ../shared/data/real/brushed_streaks_diagonal.png ] && sized_maps+=("brushed_streaks_diagonal=real:brushed_streaks_diagonal.png")
 [ -f ../shared/data/real/brick_floor.png ] && sized_maps+=("brick_floor=real:brick_floor.png")
@@ -148,6 +149,7 @@ for entry in "${sized_maps[@]}"; do
   "$exe" render "$d/scene.json" --reference "$rays" -q -o "$d/reference.exr"
   "$exe" render "$d/scene.json" --reference "$rays" --seed 1 -q -o "$d/reference_seed1.exr"
   f=$(block_l1 "$d/reference_seed1.exr" "$d/reference.exr")
+  rf=$(rmse "$d/reference_seed1.exr" "$d/reference.exr")
   for method in "${methods[@]}"; do
     v="$d/$method"
     mkdir -p "$v"
@@ -163,7 +165,8 @@ for entry in "${sized_maps[@]}"; do
     fi
     t=$("$exe" render "$v/scene.json" --assets "$v/assets" -o "$v/effect.exr" | seconds)
     e=$(block_l1 "$v/effect.exr" "$d/reference.exr")
-    echo "| $label | $size | $method | $b | $bytes | $t | $e | $f | $(printf "%.1f" "$(echo "scale=3; $e / $f" | bc)") |"
+    r=$(rmse "$v/effect.exr" "$d/reference.exr")
+    echo "| $label | $size | $method | $b | $bytes | $t | $e | $f | $(printf "%.1f" "$(echo "scale=3; $e / $f" | bc)") | $r | $rf |"
   done
   rm -rf "$d"
 done
@@ -192,7 +195,7 @@ per_iteration=$(echo "scale=6; ($t_long - $t_short) / 1000" | bc)
 fixed=$(echo "scale=3; $t_short - 200 * $per_iteration" | bc)
 echo
 echo "Accuracy against training time ($curve_label, 1024^2, 9 x 32 bins, F = 16, batch 512): one bake per target"
-echo "wall time, its iterations from two calibration bakes on this machine ($per_iteration s per iteration, $fixed s"
+echo "wall time, its iterations from two calibration bakes on this machine ($(printf %.6f "$per_iteration") s per iteration, $(printf %.3f "$fixed") s"
 echo "paid once per bake); mean D_KL(exact || predicted) per footprint side, 400 footprints each (the bench above):"
 echo
 echo "| target | iterations | wall (s) | 8 | 16 | 32 | 64 | 128 | 256 |"
