@@ -1,7 +1,8 @@
-// Records grouped by a small integer key with a stable counting sort: O(records + keys) time, one offset per key
-// of memory, and within each key the records keep the order they were made in - so a sum over a key's records is
-// the same sum, in the same order, as one accumulated while they were made (bit-identical floating point). Used
-// where a dense per-key accumulator would hold mostly empty slots (the crease walk: a few pieces in a million cells).
+// Records (from one or more lists, taken in list order) grouped by a small integer key with a stable counting
+// sort: O(records + keys) time, one offset per key of memory, and within each key the records keep the order they
+// were made in - so a sum over a key's records is the same sum, in the same order, as one accumulated while they
+// were made (bit-identical floating point), even when parallel chunks made them in separate lists. Used where a
+// dense per-key accumulator would hold mostly empty slots (the crease walk: a few pieces in a million cells).
 #pragma once
 
 #include <cstddef>
@@ -19,17 +20,22 @@ struct GroupedByKey {
   size_t end(size_t key) const { return offset[key + 1]; }
 };
 
-// key_of(record) must be < keys.
+// The records of several lists, taken in list order; key_of(record) must be < keys.
 template <typename Record, typename KeyOf>
-GroupedByKey<Record> group_by_key(const std::vector<Record>& in, size_t keys, KeyOf&& key_of) {
+GroupedByKey<Record> group_by_key(const std::vector<std::vector<Record>>& lists, size_t keys, KeyOf&& key_of) {
   GroupedByKey<Record> g;
   g.offset.assign(keys + 1, 0);
-  for (const Record& r : in) ++g.offset[key_of(r)];
+  size_t records = 0;
+  for (const std::vector<Record>& list : lists) {
+    records += list.size();
+    for (const Record& r : list) ++g.offset[key_of(r)];
+  }
   size_t start = 0;  // offset[k] becomes the first slot of key k
   for (size_t k = 0; k < keys; ++k) start += std::exchange(g.offset[k], start);
-  g.records.resize(in.size());
-  for (const Record& r : in) g.records[g.offset[key_of(r)]++] = r;  // offset[k] ends at key k's end...
-  for (size_t k = keys; k > 0; --k) g.offset[k] = g.offset[k - 1];  // ... which is key k + 1's first slot
+  g.records.resize(records);
+  for (const std::vector<Record>& list : lists)
+    for (const Record& r : list) g.records[g.offset[key_of(r)]++] = r;  // offset[k] ends at key k's end...
+  for (size_t k = keys; k > 0; --k) g.offset[k] = g.offset[k - 1];      // ... which is key k + 1's first slot
   g.offset[0] = 0;
   return g;
 }

@@ -177,10 +177,8 @@ class CurveWalk {
 
 // Each crossed edge's crossing: the mean of the curves' crossings there (merged when several cross it), summed in
 // the walk's order. Blocks of edges in parallel, their statistics added in block order.
-void merge_edge_crossings(const std::vector<EdgeCrossing>& crossings, std::vector<float>& out,
+void merge_edge_crossings(const GroupedByKey<EdgeCrossing>& by_edge, std::vector<float>& out,
                           SimplifyStatistics& stats) {
-  const GroupedByKey<EdgeCrossing> by_edge =
-      group_by_key(crossings, out.size(), [](const EdgeCrossing& c) { return c.edge; });
   constexpr size_t kBlock = 4096;
   std::vector<SimplifyStatistics> block_stats((out.size() + kBlock - 1) / kBlock);
   parallel_for(0, int64_t(block_stats.size()), [&](int64_t b) {
@@ -227,15 +225,45 @@ uint16_t cell_signature(const CellPieces& cell, uint64_t& deleted_segments) {
 }  // namespace
 
 SimplifyStatistics simplify_curves(const CurveSet& curves, CreaseField& field) {
+  // The curves walked in parallel chunks, appended in curve order.
+  constexpr size_t kCurvesPerChunk = 64;
+  const size_t chunks = (curves.curves.size() + kCurvesPerChunk - 1) / kCurvesPerChunk;
+  std::vector<CurveWalk> chunk_walks(chunks, CurveWalk(field));
+  std::vector<SimplifyStatistics> chunk_stats(chunks);
+  parallel_for(0, int64_t(chunks), [&](int64_t c) {
+    for (size_t k = size_t(c) * kCurvesPerChunk; k < std::min(curves.curves.size(), size_t(c + 1) * kCurvesPerChunk);
+         ++k)
+      chunk_walks[size_t(c)].walk_curve(curves.curves[k], chunk_stats[size_t(c)]);
+  });
+  // Their lists in curve order (as one walk over all of them would record), the junctions' pieces last.
   SimplifyStatistics stats;
-  CurveWalk walk(field);
-  for (const CurvePolyline& curve : curves.curves) walk.walk_curve(curve, stats);
-  walk.join_curve_ends();
-  merge_edge_crossings(walk.h, field.crossing_h, stats);
-  merge_edge_crossings(walk.v, field.crossing_v, stats);
+  std::vector<std::vector<EdgeCrossing>> h, v;
+  std::vector<std::vector<CellPiece>> pieces;
+  CurveWalk junctions(field);
+  for (size_t c = 0; c < chunks; ++c) {
+    h.push_back(std::move(chunk_walks[c].h));
+    v.push_back(std::move(chunk_walks[c].v));
+    pieces.push_back(std::move(chunk_walks[c].pieces));
+    for (const auto& [point, at] : chunk_walks[c].ends)
+      junctions.ends[point].insert(junctions.ends[point].end(), at.begin(), at.end());
+    stats.input_segments += chunk_stats[c].input_segments;
+    stats.input_crossings += chunk_stats[c].input_crossings;
+  }
+  chunk_walks.clear();
+  junctions.join_curve_ends();
+  pieces.push_back(std::move(junctions.pieces));
+  // The three lists grouped by edge and by cell, side by side.
+  GroupedByKey<EdgeCrossing> by_h, by_v;
+  GroupedByKey<CellPiece> by_cell;
+  parallel_for(0, 3, [&](int64_t list) {
+    const auto edge_of = [](const EdgeCrossing& c) { return c.edge; };
+    if (list == 0) by_h = group_by_key(h, field.crossing_h.size(), edge_of);
+    if (list == 1) by_v = group_by_key(v, field.crossing_v.size(), edge_of);
+    if (list == 2) by_cell = group_by_key(pieces, field.segments.size(), [](const CellPiece& p) { return p.cell; });
+  });
+  merge_edge_crossings(by_h, field.crossing_h, stats);
+  merge_edge_crossings(by_v, field.crossing_v, stats);
   // Signatures by rows in parallel; each row counts its own, summed in row order.
-  const GroupedByKey<CellPiece> by_cell =
-      group_by_key(walk.pieces, field.segments.size(), [](const CellPiece& p) { return p.cell; });
   const uint32_t cells_x = field.cells_x();
   std::vector<uint64_t> row_deleted(field.cells_y(), 0), row_with_segments(field.cells_y(), 0);
   parallel_for(0, field.cells_y(), [&](int64_t j) {

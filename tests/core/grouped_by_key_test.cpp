@@ -1,5 +1,5 @@
-// group_by_key (libbake/core/grouped_by_key.h) against std::stable_sort by key, and floating-point sums per key
-// equal bit for bit to the sums accumulated in the input's order.
+// group_by_key (libbake/core/grouped_by_key.h) against std::stable_sort by key of the lists joined in order, and
+// floating-point sums per key equal bit for bit to the sums accumulated in that order.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,14 +15,17 @@ struct Record {
   double value;
 };
 
-TEST(GroupedByKey, IsAStableSortByKeyWithEveryKeysRange) {
+TEST(GroupedByKey, IsAStableSortByKeyOfTheListsInOrderWithEveryKeysRange) {
   for (const size_t keys : {size_t(1), size_t(7), size_t(100000)}) {
     std::mt19937 rng{unsigned(keys)};
     std::uniform_int_distribution<size_t> key(0, std::min<size_t>(keys, 50) - 1);  // most keys empty when many
     std::uniform_real_distribution<double> value(-1e6, 1e6);
     std::vector<Record> in(20000);
     for (Record& r : in) r = {key(rng), value(rng)};
-    const GroupedByKey<Record> g = group_by_key(in, keys, [](const Record& r) { return r.key; });
+    // The records in three lists of unequal lengths (one empty), as chunks of a parallel producer would be.
+    const std::vector<std::vector<Record>> lists = {
+        std::vector<Record>(in.begin(), in.begin() + 5000), {}, std::vector<Record>(in.begin() + 5000, in.end())};
+    const GroupedByKey<Record> g = group_by_key(lists, keys, [](const Record& r) { return r.key; });
     std::vector<Record> sorted = in;
     std::stable_sort(sorted.begin(), sorted.end(), [](const Record& a, const Record& b) { return a.key < b.key; });
     ASSERT_EQ(g.records.size(), sorted.size());
@@ -46,7 +49,8 @@ TEST(GroupedByKey, IsAStableSortByKeyWithEveryKeysRange) {
 }
 
 TEST(GroupedByKey, NoRecordsGiveEmptyGroups) {
-  const GroupedByKey<Record> g = group_by_key(std::vector<Record>{}, 3, [](const Record& r) { return r.key; });
+  const GroupedByKey<Record> g =
+      group_by_key(std::vector<std::vector<Record>>{}, 3, [](const Record& r) { return r.key; });
   for (size_t k = 0; k < 3; ++k) EXPECT_EQ(g.begin(k), g.end(k));
   EXPECT_TRUE(g.records.empty());
 }
