@@ -222,10 +222,33 @@ uint16_t cell_signature(const CellPieces& cell, uint64_t& deleted_segments) {
   return mask;
 }
 
+// Every cell's signature from its pieces, rows in parallel; each row counts its own, summed in row order.
+void assign_cell_signatures(const GroupedByKey<CellPiece>& by_cell, CreaseField& field, SimplifyStatistics& stats) {
+  std::vector<uint64_t> row_deleted(field.cells_y(), 0), row_with_segments(field.cells_y(), 0);
+  parallel_for(0, field.cells_y(), [&](int64_t j) {
+    for (uint32_t i = 0; i < field.cells_x(); ++i) {
+      const size_t c = field.cell_index(i, uint32_t(j));
+      field.segments[c] = 0;
+      if (by_cell.begin(c) == by_cell.end(c)) continue;  // most cells: no curve passes
+      CellPieces cell;
+      for (size_t r = by_cell.begin(c); r < by_cell.end(c); ++r) {
+        ++cell.count[size_t(by_cell.records[r].bit)];
+        cell.direction[size_t(by_cell.records[r].bit)] += by_cell.records[r].direction;
+      }
+      field.segments[c] = cell_signature(cell, row_deleted[size_t(j)]);
+      row_with_segments[size_t(j)] += field.segments[c] != 0;
+    }
+  });
+  for (size_t j = 0; j < row_deleted.size(); ++j) {
+    stats.deleted_segments += row_deleted[j];
+    stats.cells_with_segments += row_with_segments[j];
+  }
+}
+
 }  // namespace
 
 SimplifyStatistics simplify_curves(const CurveSet& curves, CreaseField& field) {
-  // The curves walked in parallel chunks, appended in curve order.
+  // The curves walked in parallel chunks of kCurvesPerChunk.
   constexpr size_t kCurvesPerChunk = 64;
   const size_t chunks = (curves.curves.size() + kCurvesPerChunk - 1) / kCurvesPerChunk;
   std::vector<CurveWalk> chunk_walks(chunks, CurveWalk(field));
@@ -244,8 +267,10 @@ SimplifyStatistics simplify_curves(const CurveSet& curves, CreaseField& field) {
     h.push_back(std::move(chunk_walks[c].h));
     v.push_back(std::move(chunk_walks[c].v));
     pieces.push_back(std::move(chunk_walks[c].pieces));
-    for (const auto& [point, at] : chunk_walks[c].ends)
-      junctions.ends[point].insert(junctions.ends[point].end(), at.begin(), at.end());
+    for (const auto& [point, at] : chunk_walks[c].ends) {
+      std::vector<CurveEnd>& all = junctions.ends[point];
+      all.insert(all.end(), at.begin(), at.end());
+    }
     stats.input_segments += chunk_stats[c].input_segments;
     stats.input_crossings += chunk_stats[c].input_crossings;
   }
@@ -263,27 +288,7 @@ SimplifyStatistics simplify_curves(const CurveSet& curves, CreaseField& field) {
   });
   merge_edge_crossings(by_h, field.crossing_h, stats);
   merge_edge_crossings(by_v, field.crossing_v, stats);
-  // Signatures by rows in parallel; each row counts its own, summed in row order.
-  const uint32_t cells_x = field.cells_x();
-  std::vector<uint64_t> row_deleted(field.cells_y(), 0), row_with_segments(field.cells_y(), 0);
-  parallel_for(0, field.cells_y(), [&](int64_t j) {
-    for (uint32_t i = 0; i < cells_x; ++i) {
-      const size_t c = field.cell_index(i, uint32_t(j));
-      field.segments[c] = 0;
-      if (by_cell.begin(c) == by_cell.end(c)) continue;  // most cells: no curve passes
-      CellPieces cell;
-      for (size_t r = by_cell.begin(c); r < by_cell.end(c); ++r) {
-        ++cell.count[size_t(by_cell.records[r].bit)];
-        cell.direction[size_t(by_cell.records[r].bit)] += by_cell.records[r].direction;
-      }
-      field.segments[c] = cell_signature(cell, row_deleted[size_t(j)]);
-      row_with_segments[size_t(j)] += field.segments[c] != 0;
-    }
-  });
-  for (size_t j = 0; j < row_deleted.size(); ++j) {
-    stats.deleted_segments += row_deleted[j];
-    stats.cells_with_segments += row_with_segments[j];
-  }
+  assign_cell_signatures(by_cell, field, stats);
   return stats;
 }
 
