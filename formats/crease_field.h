@@ -45,6 +45,9 @@ inline constexpr float kCreaseNoCrossing = -1.0f;
 // Crossings are kept this far (in cell widths) from the lattice samples, so that an edge point never
 // coincides with a corner and every one of the 8 triangles of a cell keeps a positive area.
 inline constexpr float kCreaseMinT = 1.0f / 1024.0f;
+// A sample nearer a segment than this (texels) lies on the crease: the crossings beside it were only nudged off it
+// by kCreaseMinT, and its normal may belong to either side (formats/crease_reconstruction.h).
+inline constexpr double kCreaseOnCurveDistance = 2.0 * kCreaseMinT;
 inline constexpr uint32_t kCreaseMaxSegmentsPerCell = 2;
 inline constexpr uint16_t kCreaseSegmentBits = 0x3f;
 inline constexpr uint16_t kCreaseReversedBits = 0x3f00;

@@ -61,10 +61,70 @@ struct CellCorners {
 
 CellCorners cell_corners(uint32_t ci, uint32_t cj) { return {{ci, ci + 1, ci + 1, ci}, {cj, cj, cj + 1, cj + 1}}; }
 
+// The normals of a cell's corners as one region sees them. A sample that lies on a crease (distance under
+// kCreaseOnCurveDistance: the crossings beside it were only nudged off it) holds a normal of either side, or a
+// mix, so it does not speak for the region when the region reaches a corner off the curve: seen from a
+// neighbouring corner along their edge it takes that corner's normal, and at a point p of the cell the
+// neighbours' normals weighted by p's distance from it along each edge. So every edge without a crossing
+// carries the same values seen from either cell (continuity), and a planar facet is reproduced exactly. A
+// corner with no such neighbour in the region takes the mean of the region's corners off the curve; a region
+// whose corners all lie on the curve keeps their own normals. Distance and gradient are exact at every sample
+// and are not replaced. (Deviation [Parilov05]: the paper assumes every sample lies strictly on one side.)
+class RegionCornerNormals {
+ public:
+  RegionCornerNormals(const CreaseField& f, const CellCorners& c, const bool reach[4]) {
+    double mean[3] = {0, 0, 0};
+    int trusted = 0;
+    bool on_curve[4];
+    for (int k = 0; k < 4; ++k) {
+      const float* sample = f.sample_normal(c.i[k], c.j[k]);
+      for (int a = 0; a < 3; ++a) own_[k][a] = sample[a];
+      on_curve[k] = f.distance[f.sample_index(c.i[k], c.j[k])] < kCreaseOnCurveDistance;
+      trusted_[k] = reach[k] && !on_curve[k];
+      if (trusted_[k]) {
+        for (int a = 0; a < 3; ++a) mean[a] += own_[k][a];
+        ++trusted;
+      }
+    }
+    for (int k = 0; k < 4; ++k) replaced_[k] = trusted > 0 && reach[k] && on_curve[k];
+    for (int a = 0; a < 3; ++a) mean_[a] = trusted ? mean[a] / trusted : 0.0;
+  }
+
+  // Corner k's normal seen along its edge from neighbour corner m.
+  void along_edge(int k, int m, double out[3]) const {
+    const double* n = !replaced_[k] ? own_[k] : trusted_[m] ? own_[m] : mean_;
+    std::copy(n, n + 3, out);
+  }
+
+  // Corner k's normal at the cell-local point p.
+  void at(int k, const double p[2], double out[3]) const {
+    if (!replaced_[k]) {
+      std::copy(own_[k], own_[k] + 3, out);
+      return;
+    }
+    // Neighbour k + 1 lies along edge k, k - 1 along edge k - 1; p's distance from corner k along each.
+    const int next = (k + 1) % 4, prev = (k + 3) % 4;
+    const double corner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    const int next_axis = k % 2 == 0 ? 0 : 1, prev_axis = 1 - next_axis;
+    const double w_next = trusted_[next] ? std::abs(p[next_axis] - corner[k][next_axis]) : 0.0;
+    const double w_prev = trusted_[prev] ? std::abs(p[prev_axis] - corner[k][prev_axis]) : 0.0;
+    if (!(w_next + w_prev > 0.0)) {
+      const double* n = trusted_[next] ? own_[next] : trusted_[prev] ? own_[prev] : mean_;
+      std::copy(n, n + 3, out);
+      return;
+    }
+    for (int a = 0; a < 3; ++a) out[a] = (w_next * own_[next][a] + w_prev * own_[prev][a]) / (w_next + w_prev);
+  }
+
+ private:
+  double own_[4][3];
+  bool trusted_[4], replaced_[4];
+  double mean_[3];
+};
+
 // No discontinuity touches the cell: bilinear interpolation (Sec. 4.3), continuous with the partition of a
 // neighbour, which is linear along every edge without a crossing. p: the point in cell-local coordinates.
-void reconstruct_bilinear(const CreaseField& f, double x, double y, const double p[2], const CellCorners& c,
-                          CreaseSample& out) {
+void reconstruct_bilinear(const CreaseField& f, const double p[2], const CellCorners& c, CreaseSample& out) {
   const double w[4] = {(1 - p[0]) * (1 - p[1]), p[0] * (1 - p[1]), p[0] * p[1], (1 - p[0]) * p[1]};
   double g[2] = {0, 0}, side = 0;
   out.distance = 0.0;
@@ -78,7 +138,17 @@ void reconstruct_bilinear(const CreaseField& f, double x, double y, const double
   if (glen > 1e-12) out.gradient[0] = g[0] / glen, out.gradient[1] = g[1] / glen;
   out.side = side >= 0 ? 1 : -1;
   out.triangle = -1;
-  bilinear_normal(f, x, y, out.normal);
+  const bool all[4] = {true, true, true, true};
+  const RegionCornerNormals corner_normals(f, c, all);
+  double n[4][3];
+  for (int k = 0; k < 4; ++k) corner_normals.at(k, p, n[k]);
+  double len = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    out.normal[a] = w[0] * n[0][a] + w[1] * n[1][a] + w[2] * n[2][a] + w[3] * n[3][a];
+    len += out.normal[a] * out.normal[a];
+  }
+  len = std::sqrt(len);
+  for (int a = 0; a < 3; ++a) out.normal[a] = len > 0.0 ? out.normal[a] / len : (a == 2 ? 1.0 : 0.0);
 }
 
 // The partition of a cell with crossings (Sec. 4.2): vertices C0..C3 (0..3), P0..P3 (4..7) and E (8) in cell-local
@@ -133,7 +203,8 @@ int containing_triangle(const CellPartition& c, const double p[2], double lambda
 // samples; an edge point interpolates the corners of its edge that the region reaches (or takes the one, or the
 // region's mean), with distance 0 where a crease crosses the edge. Sets `side` from the reached corners.
 void vertex_values(const CreaseField& f, const CreaseCellEdges& e, const CellCorners& cc, const bool reach[4],
-                   Values value[9], int& side) {
+                   const double p[2], Values value[9], int& side) {
+  const RegionCornerNormals normals(f, cc, reach);
   Values corner[4];
   for (int k = 0; k < 4; ++k) {
     const size_t s = f.sample_index(cc.i[k], cc.j[k]);
@@ -152,17 +223,23 @@ void vertex_values(const CreaseField& f, const CreaseCellEdges& e, const CellCor
     }
   if (reached) region_mean = scaled(region_mean, 1.0 / reached);
   side = side_sum >= 0 ? 1 : -1;
-  for (int k = 0; k < 4; ++k) value[k] = corner[k];
+  for (int k = 0; k < 4; ++k) {
+    value[k] = corner[k];
+    normals.at(k, p, value[k].n);
+  }
   for (int k = 0; k < 4; ++k) {
     const int a = k, b = (k + 1) % 4;
     const double t = e.along[k];
+    Values ca = corner[a], cb = corner[b];
+    normals.along_edge(a, b, ca.n);
+    normals.along_edge(b, a, cb.n);
     Values v;
     if (reach[a] && reach[b])
-      v = lerp(corner[a], corner[b], t);
+      v = lerp(ca, cb, t);
     else if (reach[a])
-      v = corner[a];
+      v = ca;
     else if (reach[b])
-      v = corner[b];
+      v = cb;
     else
       v = region_mean;
     v.d = e.crossing[k] ? 0.0 : (1 - t) * corner[a].d + t * corner[b].d;
@@ -206,7 +283,7 @@ CreaseSample reconstruct_crease(const CreaseField& f, double x, double y) {
   const CreaseCellEdges e = crease_cell_edges(f, ci, cj);
   const CellCorners corners = cell_corners(ci, cj);
   if (!(e.crossing[0] || e.crossing[1] || e.crossing[2] || e.crossing[3])) {
-    reconstruct_bilinear(f, x, y, p, corners, out);
+    reconstruct_bilinear(f, p, corners, out);
     return out;
   }
   CellPartition c = cell_partition(e);
@@ -217,7 +294,7 @@ CreaseSample reconstruct_crease(const CreaseField& f, double x, double y) {
   bool reach[4];
   for (int k = 0; k < 4; ++k) reach[k] = c.regions.find(k) == region;
   Values value[9];
-  vertex_values(f, e, corners, reach, value, out.side);
+  vertex_values(f, e, corners, reach, p, value, out.side);
   if (best >= 4) value[8] = centre_value(c, region, value);
 
   Values r;

@@ -20,6 +20,12 @@
 //    0 when a segment passes through it, else the mean of the linear interpolants along P0P2 and P1P3 (the
 //    paper's choice); gradient and normal likewise, or linear along a segment through E whose two ends R
 //    touches, or the mean of R's edge points around E.
+//    A corner sample that lies on a crease (distance < kCreaseOnCurveDistance) holds either side's normal or a
+//    mix: when the region reaches corners off the curve, its normal is replaced by theirs - along an edge by the
+//    edge's other corner, inside the cell by its two edge neighbours weighted by the point's distance from it
+//    along each edge - so edges without a crossing stay continuous and planar facets are exact (Deviation
+//    [Parilov05]: the paper assumes every sample lies strictly on one side; test:
+//    CreaseReconstruction.SamplesOnACreaseSpeakForNeitherSide).
 // 4. Barycentric interpolation in the point's triangle (Eq. 2 cases 1-3 are the three kinds of vertex
 //    values above); the gradient and the normal are renormalised ("forced to be one").
 // 5. Eq. (1) blends a profile p(d) with the map through b(d) (crease_normal below).

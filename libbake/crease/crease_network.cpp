@@ -39,6 +39,7 @@ struct CellPiece {
   size_t cell;
   int8_t bit;        // the edge pair (crease_pair_bit)
   int8_t direction;  // +1 running from the pair's first edge to its second, -1 reversed
+  bool at_corner;    // the curve only touches the cell at the corner between the pair's edges (through its sample)
 };
 
 struct LineCrossing {
@@ -47,6 +48,9 @@ struct LineCrossing {
 };
 
 double clamp_t(double t) { return std::clamp(t, double(kCreaseMinT), 1.0 - double(kCreaseMinT)); }
+
+// A crossing clamped to the end of its edge: the curve passes (within kCreaseMinT) through the lattice sample there.
+bool at_sample(double clamped_t) { return clamped_t <= double(kCreaseMinT) || clamped_t >= 1.0 - double(kCreaseMinT); }
 
 int64_t cell_of(double x, uint32_t cells) {
   return std::clamp<int64_t>(int64_t(std::floor(x + 0.5)), 0, int64_t(cells) - 1);
@@ -89,6 +93,7 @@ class CurveWalk {
     const int64_t start_x = cx_, start_y = cy_;
     entry_ = -1;
     first_exit_ = -1;
+    entry_sample_ = kNoSample;
     for (const CurveSegment& seg : segments) walk_segment(seg, stats);
     // A closed curve back in its first cell joins its last piece to its first.
     if (curve.closed && entry_ >= 0 && first_exit_ >= 0 && cx_ == start_x && cy_ == start_y) {
@@ -120,11 +125,11 @@ class CurveWalk {
   std::map<std::pair<double, double>, std::vector<CurveEnd>> ends;  // by end point
 
  private:
-  void add_piece(int64_t x, int64_t y, int from, int to) {
+  void add_piece(int64_t x, int64_t y, int from, int to, bool at_corner = false) {
     const int bit = crease_pair_bit(from, to);
     if (bit < 0) return;  // left through the edge it came in by (a polyline folding back): no segment
-    pieces.push_back(
-        {field_.cell_index(uint32_t(x), uint32_t(y)), int8_t(bit), int8_t(kCreasePairFirst[bit] == from ? 1 : -1)});
+    pieces.push_back({field_.cell_index(uint32_t(x), uint32_t(y)), int8_t(bit),
+                      int8_t(kCreasePairFirst[bit] == from ? 1 : -1), at_corner});
   }
 
   void walk_segment(const CurveSegment& seg, SimplifyStatistics& stats) {
@@ -144,32 +149,42 @@ class CurveWalk {
       const double x = ax + c.s * dx, y = ay + c.s * dy;
       int exit, next_entry;
       int64_t nx = cx_, ny = cy_;
+      LatticeSample sample = kNoSample;  // the sample the crossing is at, if any
       if (c.vertical) {
         const bool right = dx > 0.0;
         exit = right ? 1 : 3;
         next_entry = right ? 3 : 1;
         nx += right ? 1 : -1;
-        v.push_back(
-            {field_.v_edge_index(uint32_t(right ? cx_ + 1 : cx_), uint32_t(cy_)), clamp_t(y - (double(cy_) - 0.5))});
+        const double t = clamp_t(y - (double(cy_) - 0.5));
+        v.push_back({field_.v_edge_index(uint32_t(right ? cx_ + 1 : cx_), uint32_t(cy_)), t});
+        if (at_sample(t)) sample = {right ? cx_ + 1 : cx_, t < 0.5 ? cy_ : cy_ + 1};
       } else {
         const bool down = dy > 0.0;
         exit = down ? 2 : 0;
         next_entry = down ? 0 : 2;
         ny += down ? 1 : -1;
-        h.push_back(
-            {field_.h_edge_index(uint32_t(cx_), uint32_t(down ? cy_ + 1 : cy_)), clamp_t(x - (double(cx_) - 0.5))});
+        const double t = clamp_t(x - (double(cx_) - 0.5));
+        h.push_back({field_.h_edge_index(uint32_t(cx_), uint32_t(down ? cy_ + 1 : cy_)), t});
+        if (at_sample(t)) sample = {t < 0.5 ? cx_ : cx_ + 1, down ? cy_ + 1 : cy_};
       }
       ++stats.input_crossings;
-      if (entry_ >= 0) add_piece(cx_, cy_, entry_, exit);
+      // A curve through a sample crosses both edges beside it, passing through the cell between them only at that
+      // corner: the piece is marked (see corner_piece_kept).
+      if (entry_ >= 0) add_piece(cx_, cy_, entry_, exit, sample != kNoSample && sample == entry_sample_);
       if (first_exit_ < 0 && entry_ < 0) first_exit_ = exit;
       cx_ = nx;
       cy_ = ny;
       entry_ = next_entry;
+      entry_sample_ = sample;
     }
   }
 
+  using LatticeSample = std::pair<int64_t, int64_t>;  // sample (i, j)
+  static constexpr LatticeSample kNoSample = {-1, -1};
+
   const CreaseField& field_;
   std::vector<LineCrossing> crossings_;
+  LatticeSample entry_sample_ = kNoSample;  // the sample the walk entered the current cell at, if any
   int64_t cx_ = 0, cy_ = 0;  // the walk's current cell
   int entry_ = -1;           // the edge through which the walk entered it (-1: the curve starts in it)
   int first_exit_ = -1;      // the edge through which the curve left its first cell
@@ -185,8 +200,14 @@ void merge_edge_crossings(const GroupedByKey<EdgeCrossing>& by_edge, std::vector
     SimplifyStatistics& s = block_stats[size_t(b)];
     for (size_t e = size_t(b) * kBlock; e < std::min(out.size(), size_t(b + 1) * kBlock); ++e) {
       if (by_edge.begin(e) == by_edge.end(e)) continue;
+      // A crossing at a sample yields to the edge's other crossings: the sample lies on a curve, so the
+      // reconstruction does not take its normal for either side (formats/crease_reconstruction.h), and merging
+      // would move a crossing inside the edge towards the sample.
+      bool inside = false;
+      for (size_t r = by_edge.begin(e); r < by_edge.end(e); ++r) inside |= !at_sample(by_edge.records[r].t);
       EdgeCrossings in;
-      for (size_t r = by_edge.begin(e); r < by_edge.end(e); ++r) in.add(by_edge.records[r].t);
+      for (size_t r = by_edge.begin(e); r < by_edge.end(e); ++r)
+        if (!inside || !at_sample(by_edge.records[r].t)) in.add(by_edge.records[r].t);
       const float t = float(clamp_t(in.sum / in.count));
       out[e] = std::clamp(t, kCreaseMinT, 1.0f - kCreaseMinT);
       ++s.crossed_edges;
@@ -222,6 +243,15 @@ uint16_t cell_signature(const CellPieces& cell, uint64_t& deleted_segments) {
   return mask;
 }
 
+// A piece that touches its cell only at a corner cuts off that corner's sample, which lies on the curve: right
+// while both crossings stayed at that corner, but when one of the edges kept another curve's crossing instead
+// (merge_edge_crossings) the segment would cut a large part of the cell off, so it is dropped (the
+// reconstruction keeps the sample out of both sides either way: formats/crease_reconstruction.h).
+bool corner_piece_kept(const CreaseCellEdges& e, int bit) {
+  const int m = kCreasePairFirst[bit];  // corner cut bit m joins edges m and m + 1 at corner C_{m+1}
+  return e.along[m] >= 1.0 - 1.5 * double(kCreaseMinT) && e.along[(m + 1) % 4] <= 1.5 * double(kCreaseMinT);
+}
+
 // Every cell's signature from its pieces, rows in parallel; each row counts its own, summed in row order.
 void assign_cell_signatures(const GroupedByKey<CellPiece>& by_cell, CreaseField& field, SimplifyStatistics& stats) {
   std::vector<uint64_t> row_deleted(field.cells_y(), 0), row_with_segments(field.cells_y(), 0);
@@ -231,9 +261,15 @@ void assign_cell_signatures(const GroupedByKey<CellPiece>& by_cell, CreaseField&
       field.segments[c] = 0;
       if (by_cell.begin(c) == by_cell.end(c)) continue;  // most cells: no curve passes
       CellPieces cell;
+      const CreaseCellEdges edges = crease_cell_edges(field, i, uint32_t(j));
       for (size_t r = by_cell.begin(c); r < by_cell.end(c); ++r) {
-        ++cell.count[size_t(by_cell.records[r].bit)];
-        cell.direction[size_t(by_cell.records[r].bit)] += by_cell.records[r].direction;
+        const CellPiece& piece = by_cell.records[r];
+        if (piece.at_corner && !corner_piece_kept(edges, piece.bit)) {
+          ++row_deleted[size_t(j)];
+          continue;
+        }
+        ++cell.count[size_t(piece.bit)];
+        cell.direction[size_t(piece.bit)] += piece.direction;
       }
       field.segments[c] = cell_signature(cell, row_deleted[size_t(j)]);
       row_with_segments[size_t(j)] += field.segments[c] != 0;

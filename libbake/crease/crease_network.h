@@ -15,7 +15,10 @@
 // on its right, on a horizontal line to the cell below; a segment lying on a lattice line runs inside the
 // cells right of (below) it, crossing the perpendicular edges at t = 0 (clamped to kCreaseMinT); a segment
 // through a lattice vertex crosses the vertical line first when it runs right (dx > 0), else the horizontal.
-// Every crossing is clamped to [kCreaseMinT, 1 - kCreaseMinT] of its edge.
+// Every crossing is clamped to [kCreaseMinT, 1 - kCreaseMinT] of its edge. A curve through a sample crosses the two
+// edges beside it at their ends; such a crossing yields to any other crossing of the same edge (it is not merged
+// with it), and the piece between them, which touches its cell only at that corner, is kept only while both of its
+// crossings stayed at the corner (test: CreaseNetwork.CrossingAtASampleYieldsToAnotherCurvesCrossing).
 #pragma once
 
 #include <cstdint>

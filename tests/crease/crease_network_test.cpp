@@ -184,6 +184,24 @@ TEST(CreaseNetwork, SegmentThroughLatticeVertex) {
   EXPECT_GT(network_segments(f).size(), 5u);
 }
 
+// A curve through a sample crosses the two edges beside it at their ends. Where one of those edges also carries
+// another curve's crossing, the sample's crossing yields (the other is not moved towards the sample) and the piece
+// that only touched the cell at that corner is dropped (it would now cut a large triangle off the cell).
+TEST(CreaseNetwork, CrossingAtASampleYieldsToAnotherCurvesCrossing) {
+  CreaseField f;
+  f.allocate(8, 8);
+  CurveSet curves = test::curves_of({{{0.2, 2.25}, {7.8, 2.25}},     // horizontal: crosses x = 3.5 at t = 0.75 of cell row 2
+                                     {{2.25, 1.25}, {5.75, 4.75}}});  // 45 degrees through the sample (4, 3) at (3.5, 2.5)
+  simplify_curves(curves, f);
+  expect_allowed(f);
+  // The edge from sample (4, 2) to (4, 3) keeps the horizontal curve's crossing exactly.
+  EXPECT_EQ(f.crossing_v[f.v_edge_index(4, 2)], 0.75f);
+  // Cell (4, 2), right of that edge, holds the horizontal segment only (P1 - P3), not a cut of its corner C3.
+  EXPECT_EQ(f.segments[f.cell_index(4, 2)] & kCreaseSegmentBits, 1u << 5);
+  // The diagonal keeps its segments in the cells it runs through between samples.
+  EXPECT_NE(f.segments[f.cell_index(4, 3)] & kCreaseSegmentBits, 0);
+}
+
 TEST(CreaseNetwork, CoincidentSegmentsMergeToOne) {
   CreaseField f;
   f.allocate(8, 8);

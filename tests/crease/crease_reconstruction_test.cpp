@@ -135,6 +135,40 @@ TEST(CreaseReconstruction, ContinuousAcrossCellsAwayFromFeatures) {
   EXPECT_LT(worst_gradient, 1e-6);
 }
 
+// A sample that lies on a crease holds the normal of one side (or a mix): whichever it holds, the reconstruction
+// must not carry it into the other side. Two planar facets split by the 45-degree line y = x + 1, which runs
+// through the samples (i - 0.5, i + 0.5); the samples on it hold facet A's normal, facet B's, or their mean. Every
+// point farther off the line than the crossings' nudge (2 kCreaseMinT) gets its own facet's normal exactly (without
+// the on-curve rule: 0.84 off, the other facet's normal, where they hold B's; 0.43 where they hold the mean).
+TEST(CreaseReconstruction, SamplesOnACreaseSpeakForNeitherSide) {
+  const uint32_t w = 12, h = 12;
+  const Vec2 a(0.0, 1.0), b(11.0, 12.0);
+  const Vec3 facet_a = Vec3(0.6, 0.0, 0.8), facet_b = Vec3(0.0, -0.6, 0.8);
+  const Vec3 on_curve_normals[] = {facet_a, facet_b, (facet_a + facet_b).normalized()};
+  CurveSet curves;
+  curves.curves.push_back({{a, b}, false, "diagonal through samples"});
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(1.0, 11.0);
+  for (const Vec3& on_curve : on_curve_normals) {
+    const NormalMap map = test::map_from(w, h, [&](const Vec2& p) {
+      const double side = test::signed_line_distance(a, b, p);
+      return std::abs(side) < 1e-9 ? on_curve : side > 0 ? facet_a : facet_b;
+    });
+    const BakedCrease baked = test::bake(map, curves);
+    double worst = 0.0;
+    for (int k = 0; k < 20000; ++k) {
+      const double x = u(rng), y = u(rng), side = test::signed_line_distance(a, b, Vec2(x, y));
+      // On the line up to the crossings' nudge off the samples (kCreaseMinT), or near the curve's ends.
+      if (std::abs(side) < 2 * kCreaseMinT || y < 1.5 || y > 11.5) continue;
+      const Vec3 expected = side > 0 ? facet_a : facet_b;
+      const CreaseSample s = reconstruct_crease(baked.field, x, y);
+      const double e = (Vec3(s.normal[0], s.normal[1], s.normal[2]) - expected).norm();
+      worst = std::max(worst, e);
+    }
+    EXPECT_LT(worst, 1e-6) << "on-curve samples hold (" << on_curve.transpose() << ")";
+  }
+}
+
 TEST(CreaseProfiles, EquationOneClosedForms) {
   CreaseSample s;
   s.distance = 0.0;
