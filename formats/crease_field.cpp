@@ -1,6 +1,9 @@
 // The `crease` lattice: sizing, cell edge points, and reading the asset (see crease_field.h).
 #include "formats/crease_field.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "formats/asset.h"
 #include "formats/asset_writer.h"
 #include "formats/error.h"
@@ -53,6 +56,25 @@ void CreaseField::allocate(uint32_t w, uint32_t h) {
   crossing_h.assign(size_t(h + 2) * (w + 1), kCreaseNoCrossing);
   crossing_v.assign(size_t(h + 1) * (w + 2), kCreaseNoCrossing);
   segments.assign(size_t(h + 1) * (w + 1), 0);
+  junction_cells.clear();
+  junction_points.clear();
+  junction_spokes.clear();
+}
+
+int64_t CreaseField::junction_index(size_t cell) const {
+  const auto it = std::lower_bound(junction_cells.begin(), junction_cells.end(), cell);
+  return it != junction_cells.end() && *it == cell ? int64_t(it - junction_cells.begin()) : -1;
+}
+
+bool crease_point_inside_edge_points(const CreaseCellEdges& e, double u, double v, double margin) {
+  for (int k = 0; k < 4; ++k) {
+    const int n = (k + 1) % 4;
+    const double ax = e.px[n] - e.px[k], ay = e.py[n] - e.py[k];
+    // P0 -> P1 -> P2 -> P3 turns clockwise on screen (v down): inside is where the cross product is positive.
+    const double cross = ax * (v - e.py[k]) - ay * (u - e.px[k]);
+    if (!(cross >= margin * std::hypot(ax, ay)) || !(cross > 0.0)) return false;
+  }
+  return true;
 }
 
 CreaseCellEdges crease_cell_edges(const CreaseField& f, uint32_t i, uint32_t j) {
@@ -70,6 +92,28 @@ CreaseCellEdges crease_cell_edges(const CreaseField& f, uint32_t i, uint32_t j) 
     c.py[k] = k == 0 ? 0.0 : k == 2 ? 1.0 : s;
   }
   c.mask = f.segments[f.cell_index(i, j)];
+  c.junction = false;
+  c.spokes = 0;
+  if (c.mask & kCreaseJunctionBit) {
+    const int64_t n = f.junction_index(f.cell_index(i, j));
+    if (n >= 0) {
+      c.junction = true;
+      c.ex = f.junction_points[2 * size_t(n)];
+      c.ey = f.junction_points[2 * size_t(n) + 1];
+      c.spokes = f.junction_spokes[size_t(n)];
+    }
+    return c;
+  }
+  // P0P2 runs top to bottom, P1P3 right to left; E is where they cross (never parallel: one runs from the top
+  // edge to the bottom one, the other from the right edge to the left one).
+  const double ax = c.px[2] - c.px[0], ay = 1.0, bx = c.px[3] - c.px[1], by = c.py[3] - c.py[1];
+  const double cx = c.px[1] - c.px[0], cy = c.py[1] - c.py[0];
+  const double s02 = (cx * by - cy * bx) / (ax * by - ay * bx);
+  c.ex = c.px[0] + s02 * ax;
+  c.ey = s02;
+  // A diagonal's first spoke runs towards E, unless the diagonal is reversed.
+  if (c.mask & (1u << 4)) c.spokes |= 0x05 | ((c.mask >> 12) & 1u ? 0x04 : 0x01) << 4;
+  if (c.mask & (1u << 5)) c.spokes |= 0x0a | ((c.mask >> 13) & 1u ? 0x08 : 0x02) << 4;
   return c;
 }
 
@@ -84,6 +128,10 @@ void add_crease_sections(AssetWriter& writer, const CreaseField& f) {
     if (name == kCreaseCrossingVSection) writer.add(name, s.shape, f.crossing_v);
     if (name == kCreaseSegmentsSection) writer.add(name, s.shape, f.segments);
   }
+  const uint64_t n = f.junction_cells.size();
+  writer.add(kCreaseJunctionCellsSection, {n}, f.junction_cells);
+  writer.add(kCreaseJunctionPointsSection, {n, 2}, f.junction_points);
+  writer.add(kCreaseJunctionSpokesSection, {n}, f.junction_spokes);
 }
 
 std::string parse_crease_size(const Asset& asset, uint32_t& width, uint32_t& height) {
@@ -107,6 +155,21 @@ std::string check_crease_section_shapes(const Asset& asset, uint32_t width, uint
       return "'" + std::string(s.name) + "' is " + std::string(element_name(info.type)) + " " + shape_text(info.shape) +
              ", should be " + std::string(element_name(s.type)) + " " + shape_text(s.shape);
   }
+  const SectionInfo* cells = asset.find(kCreaseJunctionCellsSection);
+  const SectionInfo* points = asset.find(kCreaseJunctionPointsSection);
+  const SectionInfo* spokes = asset.find(kCreaseJunctionSpokesSection);
+  if (!cells && !points && !spokes) return {};
+  if (!cells || !points || !spokes) return "the junction sections are not all present (junction_cells, junction_points, junction_spokes)";
+  const uint64_t n = cells->shape.empty() ? 0 : cells->shape[0];
+  const std::vector<SectionShape> junction = {{kCreaseJunctionCellsSection, ElementType::u32, {n}},
+                                              {kCreaseJunctionPointsSection, ElementType::f32, {n, 2}},
+                                              {kCreaseJunctionSpokesSection, ElementType::u8, {n}}};
+  for (const SectionShape& s : junction) {
+    const SectionInfo& info = asset.section(s.name);
+    if (info.type != s.type || info.shape != s.shape)
+      return "'" + std::string(s.name) + "' is " + std::string(element_name(info.type)) + " " + shape_text(info.shape) +
+             ", should be " + std::string(element_name(s.type)) + " " + shape_text(s.shape);
+  }
   return {};
 }
 
@@ -122,6 +185,11 @@ CreaseField read_crease_field(const Asset& asset) {
   f.crossing_h = asset.read<float>(kCreaseCrossingHSection);
   f.crossing_v = asset.read<float>(kCreaseCrossingVSection);
   f.segments = asset.read<uint16_t>(kCreaseSegmentsSection);
+  if (asset.find(kCreaseJunctionCellsSection)) {
+    f.junction_cells = asset.read<uint32_t>(kCreaseJunctionCellsSection);
+    f.junction_points = asset.read<float>(kCreaseJunctionPointsSection);
+    f.junction_spokes = asset.read<uint8_t>(kCreaseJunctionSpokesSection);
+  }
   return f;
 }
 

@@ -20,7 +20,13 @@
 // - segments[j][i], u16: bit m (m = 0..3) is the segment P_m - P_{m+1 mod 4} (cutting off corner C_{m+1}),
 //   bit 4 is P0 - P2, bit 5 is P1 - P3. Bit 8 + b says the segment of bit b runs from its second point to its
 //   first (the direction of the input curve, which sets the sides of one-sided profiles). At most two
-//   segment bits, each joining two edges that have a crossing; no other bits.
+//   segment bits, each joining two edges that have a crossing; no other bits. Or, alone, bit 6: a junction cell.
+// - Junctions (where three or more facets meet, or two curves meet at an angle, inside a cell): the cell's centre
+//   E is the curves' meeting point, stored in the junction records, and its segments are spokes E - P_k.
+//   junction_cells[n] (u32, strictly increasing) is the cell index j (W + 1) + i, junction_points[n] = (u, v)
+//   E in cell-local coordinates (u right, v down; strictly inside the quadrilateral P0 P1 P2 P3), and
+//   junction_spokes[n] (u8) bit k the spoke E - P_k (k = 0..3; at least two, each on a crossed edge), bit 4 + k
+//   that it runs from P_k to E (else from E to P_k). A file without the three sections has no junction.
 //
 // Distance map: distance[j][i], unsigned distance (texels) from sample (i, j) to the nearest segment of the
 // simplified network. Gradient map: gradient[j][i] = (gx, gy), a unit vector, the gradient of the distance
@@ -51,6 +57,7 @@ inline constexpr double kCreaseOnCurveDistance = 2.0 * kCreaseMinT;
 inline constexpr uint32_t kCreaseMaxSegmentsPerCell = 2;
 inline constexpr uint16_t kCreaseSegmentBits = 0x3f;
 inline constexpr uint16_t kCreaseReversedBits = 0x3f00;
+inline constexpr uint16_t kCreaseJunctionBit = 0x40;
 
 // The edges (0..3) that segment bit b (0..5) joins.
 inline constexpr int kCreasePairFirst[6] = {0, 1, 2, 3, 0, 1};
@@ -67,6 +74,9 @@ struct CreaseField {
   std::vector<float> crossing_h;   // [H + 2][W + 1]
   std::vector<float> crossing_v;   // [H + 1][W + 2]
   std::vector<uint16_t> segments;  // [H + 1][W + 1]
+  std::vector<uint32_t> junction_cells;  // [N], cell indices, increasing
+  std::vector<float> junction_points;    // [N][2], E in cell-local coordinates
+  std::vector<uint8_t> junction_spokes;  // [N], spokes and their directions
 
   uint32_t samples_x() const { return width + 2; }
   uint32_t samples_y() const { return height + 2; }
@@ -82,8 +92,10 @@ struct CreaseField {
     const uint32_t y = std::clamp<int64_t>(int64_t(j) - 1, 0, height - 1);
     return &normals[(size_t(y) * width + x) * 3];
   }
-  // Sizes all arrays for width x height: crossings none, everything else zero.
+  // Sizes all arrays for width x height: crossings none, no junction, everything else zero.
   void allocate(uint32_t w, uint32_t h);
+  // The junction record of a cell (by cell index), or -1.
+  int64_t junction_index(size_t cell) const;
 };
 
 // One cell's edge points in cell-local coordinates (u right, v down, [0, 1]^2; corner C0 at (0, 0)).
@@ -92,8 +104,17 @@ struct CreaseCellEdges {
   double along[4];      // P_k's fraction along the edge from C_k to C_{k+1}
   bool crossing[4];     // the edge has a crossing
   uint16_t mask;        // the cell's segment word
+  // The spokes E - P_k (bit k) and their directions (bit 4 + k: from P_k to E): a junction's record, or the spokes of
+  // the diagonals (P0 - P2 is spokes 0 and 2 running 0 -> 2, P1 - P3 spokes 1 and 3), 0 without either.
+  uint8_t spokes;
+  bool junction;  // the word is a junction and its record was found: E = (ex, ey)
+  double ex, ey;  // E: the junction, or the intersection of P0P2 and P1P3
 };
 CreaseCellEdges crease_cell_edges(const CreaseField& field, uint32_t i, uint32_t j);
+
+// Whether (u, v) lies inside the quadrilateral P0 P1 P2 P3 of a cell's edge points, at least `margin` (cell widths)
+// from each of its sides. The quadrilateral is convex (one point on each side of the square).
+bool crease_point_inside_edge_points(const CreaseCellEdges& edges, double u, double v, double margin);
 
 // Section names.
 inline constexpr const char* kCreaseNormalsSection = "normals";
@@ -103,13 +124,17 @@ inline constexpr const char* kCreaseSideSection = "side";
 inline constexpr const char* kCreaseCrossingHSection = "crossing_h";
 inline constexpr const char* kCreaseCrossingVSection = "crossing_v";
 inline constexpr const char* kCreaseSegmentsSection = "segments";
+inline constexpr const char* kCreaseJunctionCellsSection = "junction_cells";
+inline constexpr const char* kCreaseJunctionPointsSection = "junction_points";
+inline constexpr const char* kCreaseJunctionSpokesSection = "junction_spokes";
 
-// Adds the seven sections, with the shapes above, to an asset being written.
+// Adds the ten sections, with the shapes above, to an asset being written.
 void add_crease_sections(AssetWriter& writer, const CreaseField& field);
 
 // Reads parameters.width/height; empty when they are integers in 1..16384, else what is wrong.
 std::string parse_crease_size(const Asset& asset, uint32_t& width, uint32_t& height);
-// Empty when every section has the type and shape above for width x height, else what differs.
+// Empty when every section has the type and shape above for width x height (the three junction sections: all or
+// none, with one N), else what differs.
 std::string check_crease_section_shapes(const Asset& asset, uint32_t width, uint32_t height);
 // Reads a crease asset (parameters and shapes checked; Error(invalid_input) otherwise). Values are not
 // checked: run the kind's invariants (validate) for that.

@@ -157,7 +157,8 @@ void reconstruct_bilinear(const CreaseField& f, const double p[2], const CellCor
 struct CellPartition {
   double pos[9][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   int tri[8][3];
-  double s02 = 0.0, s13 = 0.0;  // E = P0 + s02 (P2 - P0) = P1 + s13 (P3 - P1)
+  double s02 = 0.0, s13 = 0.0;  // without a junction, E = P0 + s02 (P2 - P0) = P1 + s13 (P3 - P1)
+  bool junction = false;        // E is a junction: its spokes are segments
   uint16_t seg = 0;             // the segment bits of the cell's signature
   UnionFind regions;
 };
@@ -166,12 +167,10 @@ CellPartition cell_partition(const CreaseCellEdges& e) {
   CellPartition c;
   double(&pos)[9][2] = c.pos;
   for (int k = 0; k < 4; ++k) pos[4 + k][0] = e.px[k], pos[4 + k][1] = e.py[k];
-  // P0P2 runs top to bottom, P1P3 right to left.
-  const double ax = pos[6][0] - pos[4][0], ay = 1.0, bx = pos[7][0] - pos[5][0], by = pos[7][1] - pos[5][1];
-  const double cx = pos[5][0] - pos[4][0], cy = pos[5][1] - pos[4][1];
-  const double den = ax * by - ay * bx;  // never 0: P0P2 and P1P3 cross inside the cell
-  c.s02 = (cx * by - cy * bx) / den, c.s13 = (cx * ay - cy * ax) / den;
-  pos[8][0] = pos[4][0] + c.s02 * ax, pos[8][1] = c.s02;
+  pos[8][0] = e.ex, pos[8][1] = e.ey;
+  // Without a junction E is where P0P2 (top to bottom: its parameter is v) crosses P1P3 (right to left: 1 - u).
+  c.s02 = e.ey, c.s13 = 1.0 - e.ex;
+  c.junction = e.junction;
   for (int k = 0; k < 4; ++k) {
     c.tri[k][0] = 4 + (k + 3) % 4, c.tri[k][1] = k, c.tri[k][2] = 4 + k;
     c.tri[4 + k][0] = 8, c.tri[4 + k][1] = 4 + k, c.tri[4 + k][2] = 4 + (k + 1) % 4;
@@ -180,8 +179,7 @@ CellPartition cell_partition(const CreaseCellEdges& e) {
   for (int k = 0; k < 4; ++k) {
     if (!((c.seg >> ((k + 3) % 4)) & 1u)) c.regions.join(k, 4 + (k + 3) % 4);  // T_k - I_{k-1} across P_{k-1}P_k
     const int spoke = (k + 1) % 4;                                             // I_k - I_{k+1} across E P_{k+1}
-    const bool cut = ((c.seg >> 4) & 1u && spoke % 2 == 0) || ((c.seg >> 5) & 1u && spoke % 2 == 1);
-    if (!cut) c.regions.join(4 + k, 4 + spoke);
+    if (!((e.spokes >> spoke) & 1u)) c.regions.join(4 + k, 4 + spoke);
   }
   return c;
 }
@@ -256,7 +254,7 @@ Values centre_value(const CellPartition& c, int region, const Values value[9]) {
   for (int k = 0; k < 4; ++k)
     if (regions.find(4 + k) == region) touches[k] = touches[(k + 1) % 4] = true;
   Values v;
-  if (!through02 && !through13) {
+  if (!c.junction && !through02 && !through13) {
     v = lerp(lerp(value[4], value[6], c.s02), lerp(value[5], value[7], c.s13), 0.5);
   } else if (through02 && touches[0] && touches[2]) {
     v = lerp(value[4], value[6], c.s02);
@@ -268,7 +266,7 @@ Values centre_value(const CellPartition& c, int region, const Values value[9]) {
       if (touches[k]) accumulate(v, value[4 + k], 1.0), ++n;
     v = scaled(v, 1.0 / n);
   }
-  if (through02 || through13) v.d = 0.0;
+  if (c.junction || through02 || through13) v.d = 0.0;
   return v;
 }
 

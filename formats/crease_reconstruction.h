@@ -6,8 +6,11 @@
 // 0. A cell that no discontinuity touches (no crossing on its edges) is interpolated bilinearly (Sec. 4.3).
 // 1. Otherwise the cell is split into 8 triangles (Fig. 7): four corner triangles T_k = (P_{k-1}, C_k, P_k) and four
 //    inner triangles I_k = (E, P_k, P_{k+1}), where P_k is edge k's crossing (or its midpoint) and E the
-//    intersection of P0P2 and P1P3. Every allowed segment is an edge of this partition (P_m P_{m+1} separates
-//    T_{m+1} from I_m; P0P2 and P1P3 are pairs of spokes through E).
+//    intersection of P0P2 and P1P3 - or, in a junction cell, the junction point stored for it. Every allowed
+//    segment is an edge of this partition (P_m P_{m+1} separates T_{m+1} from I_m; P0P2 and P1P3 are pairs of
+//    spokes through E; a junction's segments are spokes E P_k). (Deviation [Parilov05]: the paper keeps at most two
+//    segments per cell, so where three facets meet inside a cell one of them is lost; a junction keeps up to four
+//    creases meeting at their true point; test: CreaseReconstruction.JunctionCellsReproduceThreeFacetsExactly.)
 // 2. Regions: the triangles connected through partition edges that are not segments. A point sees only the
 //    values of its own region (side-aware interpolation, "never across a discontinuity").
 // 3. Vertex values seen from region R (appendix step 3): a corner: its sample. An edge point P_k: distance 0 if
@@ -19,7 +22,7 @@
 //    configuration; test: CreaseReconstruction.OppositeSidesStayInTheirHemisphere). The centre E: distance
 //    0 when a segment passes through it, else the mean of the linear interpolants along P0P2 and P1P3 (the
 //    paper's choice); gradient and normal likewise, or linear along a segment through E whose two ends R
-//    touches, or the mean of R's edge points around E.
+//    touches, or (at a junction, too) the mean of R's edge points around E.
 //    A corner sample that lies on a crease (distance < kCreaseOnCurveDistance) holds either side's normal or a
 //    mix: when the region reaches corners off the curve, its normal is replaced by theirs - along an edge by the
 //    edge's other corner, inside the cell by its two edge neighbours weighted by the point's distance from it

@@ -4,9 +4,11 @@
 // Invariants `validate` checks, in this order (the first finding ends the check): parameters (16001), section
 // types and shapes (16002), finite floats (16003), crossings -1 or in [kCreaseMinT, 1 - kCreaseMinT] (16004),
 // allowed cell configurations (16005: at most two segment bits, each between two crossed edges, no unknown
-// bits, direction bits only with their segment), distances >= 0 (16006), unit gradients (16007: |len - 1| <=
-// 1e-5, float rounding of a renormalised vector is ~1e-7), sides +1/-1 (16008), unit normals with z >= 0
-// (16009, same tolerance).
+// bits, direction bits only with their segment; or the junction bit alone), junction records (16010: cells
+// increasing, one per junction word, two to four spokes on crossed edges, directions only on spokes, the point
+// strictly inside the quadrilateral of the cell's edge points), distances >= 0 (16006), unit gradients (16007:
+// |len - 1| <= 1e-5, float rounding of a renormalised vector is ~1e-7), sides +1/-1 (16008), unit normals with
+// z >= 0 (16009, same tolerance).
 #include <bit>
 #include <cmath>
 #include <string>
@@ -27,7 +29,8 @@ bool check_crease_values(const CreaseField& f, std::vector<Finding>& out) {
                                                                       {kCreaseDistanceSection, &f.distance},
                                                                       {kCreaseGradientSection, &f.gradient},
                                                                       {kCreaseCrossingHSection, &f.crossing_h},
-                                                                      {kCreaseCrossingVSection, &f.crossing_v}};
+                                                                      {kCreaseCrossingVSection, &f.crossing_v},
+                                                                      {kCreaseJunctionPointsSection, &f.junction_points}};
   for (const auto& [name, values] : floats)
     for (size_t i = 0; i < values->size(); ++i)
       if (!std::isfinite((*values)[i])) {
@@ -57,7 +60,9 @@ bool check_crease_cells(const CreaseField& f, std::vector<Finding>& out) {
       const CreaseCellEdges c = crease_cell_edges(f, i, j);
       std::string problem;
       const uint16_t segments = c.mask & kCreaseSegmentBits;
-      if (c.mask & ~(kCreaseSegmentBits | kCreaseReversedBits))
+      if (c.mask & kCreaseJunctionBit)
+        problem = c.mask != kCreaseJunctionBit ? "a junction word with other bits" : "";
+      else if (c.mask & ~(kCreaseSegmentBits | kCreaseReversedBits))
         problem = "unknown bits";
       else if (std::popcount(segments) > int(kCreaseMaxSegmentsPerCell))
         problem = number_text(std::popcount(segments)) + " segments";
@@ -76,6 +81,36 @@ bool check_crease_cells(const CreaseField& f, std::vector<Finding>& out) {
         return false;
       }
     }
+  return true;
+}
+
+// Every junction record: cells increasing and in range, each the record of a junction word and every junction word
+// with one, two to four spokes on crossed edges, direction bits only on spokes, E strictly inside the edge points.
+bool check_crease_junctions(const CreaseField& f, std::vector<Finding>& out) {
+  const auto finding = [&](size_t n, const std::string& problem) {
+    out.push_back(make_finding(msg::crease_bad_junction, "junction record " + number_text(n) + ": " + problem,
+                               {{"section", kCreaseJunctionCellsSection}, {"index", n}}));
+    return false;
+  };
+  size_t words = 0;
+  for (uint16_t w : f.segments) words += (w & kCreaseJunctionBit) != 0;
+  if (words != f.junction_cells.size())
+    return finding(0, number_text(words) + " junction words but " + number_text(f.junction_cells.size()) + " records");
+  for (size_t n = 0; n < f.junction_cells.size(); ++n) {
+    const size_t cell = f.junction_cells[n];
+    if (cell >= f.segments.size()) return finding(n, "cell " + number_text(cell) + " out of range");
+    if (n > 0 && cell <= f.junction_cells[n - 1]) return finding(n, "cells not increasing");
+    if (!(f.segments[cell] & kCreaseJunctionBit)) return finding(n, "its cell's word is not a junction");
+    const CreaseCellEdges e = crease_cell_edges(f, uint32_t(cell % f.cells_x()), uint32_t(cell / f.cells_x()));
+    const uint8_t spokes = f.junction_spokes[n] & 0x0f, directions = f.junction_spokes[n] >> 4;
+    if (std::popcount(unsigned(spokes)) < 2) return finding(n, "fewer than two spokes");
+    if (directions & ~spokes) return finding(n, "a direction bit without its spoke");
+    for (int k = 0; k < 4; ++k)
+      if ((spokes >> k) & 1u && !e.crossing[k])
+        return finding(n, "spoke " + number_text(k) + " ends on an edge without a crossing");
+    if (!crease_point_inside_edge_points(e, e.ex, e.ey, 0.0))
+      return finding(n, "the point (" + number_text(e.ex) + ", " + number_text(e.ey) + ") is not inside the edge points");
+  }
   return true;
 }
 
@@ -113,7 +148,9 @@ void check_crease(const Asset& a, std::vector<Finding>& out) {
     return;
   }
   const CreaseField f = read_crease_field(a);
-  if (!check_crease_values(f, out) || !check_crease_cells(f, out) || !check_crease_samples(f, out)) return;
+  if (!check_crease_values(f, out) || !check_crease_cells(f, out) || !check_crease_junctions(f, out) ||
+      !check_crease_samples(f, out))
+    return;
   for (size_t k = 0; k < f.normals.size() / 3; ++k) {
     const double x = f.normals[3 * k], y = f.normals[3 * k + 1], z = f.normals[3 * k + 2];
     const double len = std::sqrt(x * x + y * y + z * z);
@@ -141,7 +178,8 @@ AssetKind crease_kind() {
       {kCreaseSegmentsSection, {ElementType::u16}, 2}};
   k.knows_section = [](const std::string& name) {
     for (const char* s : {kCreaseNormalsSection, kCreaseDistanceSection, kCreaseGradientSection, kCreaseSideSection,
-                          kCreaseCrossingHSection, kCreaseCrossingVSection, kCreaseSegmentsSection})
+                          kCreaseCrossingHSection, kCreaseCrossingVSection, kCreaseSegmentsSection,
+                          kCreaseJunctionCellsSection, kCreaseJunctionPointsSection, kCreaseJunctionSpokesSection})
       if (name == s) return true;
     return false;
   };

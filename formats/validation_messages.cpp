@@ -109,6 +109,7 @@ std::span<const MessageInfo> all_messages() {
       crease_gradient_not_unit,
       crease_bad_side,
       crease_bad_normal,
+      crease_bad_junction,
       graph_bad_parameters,
       graph_section_shape,
       graph_non_finite,

@@ -186,6 +186,11 @@ inline constexpr MessageInfo crease_gradient_not_unit{16007, Severity::error, "c
 inline constexpr MessageInfo crease_bad_side{16008, Severity::error, "crease: side is neither +1 nor -1"};
 inline constexpr MessageInfo crease_bad_normal{16009, Severity::error,
                                                "crease: normal is not a unit vector in the upper hemisphere"};
+inline constexpr MessageInfo crease_bad_junction{
+    16010, Severity::error,
+    "crease: junction record not allowed (cells not increasing or out of range, a junction word without its record "
+    "or a record without its word, fewer than two spokes, a spoke on an edge without a crossing, a direction bit "
+    "without its spoke, or the point not inside the cell's edge points)"};
 // 19xxx: kind 9, `graph` (exemplar-graph analysis for multiscale synthesis)
 inline constexpr MessageInfo graph_bad_parameters{19001, Severity::error,
                                                   "graph: parameters or graph metadata missing or inconsistent"};

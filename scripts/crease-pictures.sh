@@ -35,9 +35,10 @@ undo that mixing (the bands beside each crease).
 ![exact samples](panels_exact.png)
 
 \`panels_exact.png\`: the exact normals point-sampled at the texel centres, the input [Parilov05] assumes (each
-sample on one side). Away from the corners the reconstruction is the exact picture; what differs is in the cells
-that hold a crease corner: there one straight segment between the creases' crossings cuts the corner, and of three
-creases meeting (a corner and its mitre) a cell keeps at most two (Sec. 4.1's allowed configurations).
+sample on one side, but for those the mitres run through). The reconstruction is the exact picture but in a few
+cells at the corners: where two creases leaving a corner cross the same cell edge (one crossing per edge, so they
+merge), and beyond a texel centre where a mitre ends. Where three creases meet inside a cell (a panel corner and
+its mitre) the cell is a junction and keeps all three.
 
 ![profiles](panels_profiles.png)
 

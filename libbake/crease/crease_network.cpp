@@ -2,6 +2,7 @@
 #include "libbake/crease/crease_network.h"
 
 #include <algorithm>
+#include <bit>
 #include <array>
 #include <cmath>
 #include <map>
@@ -62,10 +63,18 @@ nlohmann::json SimplifyStatistics::to_json() const {
   return {{"input_segments", input_segments},    {"input_crossings", input_crossings},
           {"crossed_edges", crossed_edges},      {"merged_edges", merged_edges},
           {"max_merge_shift", max_merge_shift},  {"cells_with_segments", cells_with_segments},
-          {"deleted_segments", deleted_segments}};
+          {"deleted_segments", deleted_segments}, {"junction_cells", junction_cells}};
 }
 
 namespace {
+
+// A point inside a cell where creases meet: the cell, the point in cell-local coordinates, and its spokes in the
+// junction_spokes encoding (formats/crease_field.h).
+struct Junction {
+  size_t cell;
+  double u, v;
+  uint8_t spokes;
+};
 
 // The end of an open curve inside a cell, for the junctions.
 struct CurveEnd {
@@ -110,19 +119,30 @@ class CurveWalk {
   // supported. (Deviation [Parilov05]: the paper converts segments one by one, so where separately listed segments
   // meet inside a cell - a panel's corner and its mitre - the cell gets no segment and interpolates across the
   // creases; test: CreaseNetwork.SegmentsMeetingInsideACellAreJoined.)
+  //
+  // Where the ends leave by two or more distinct edges, the point is also a junction candidate: its cell can keep
+  // every one of those creases as a spoke from the point itself (place_junctions).
   void join_curve_ends() {
-    for (const auto& [point, at] : ends)
+    for (const auto& [point, at] : ends) {
       for (size_t a = 0; a < at.size(); ++a)
         for (size_t b = a + 1; b < at.size(); ++b) {
           const CurveEnd& p = at[a].outgoing && !at[b].outgoing ? at[b] : at[a];
           const CurveEnd& q = &p == &at[a] ? at[b] : at[a];
           add_piece(p.cell_x, p.cell_y, p.edge, q.edge);
         }
+      Junction j{field_.cell_index(uint32_t(at.front().cell_x), uint32_t(at.front().cell_y)),
+                 point.first - (double(at.front().cell_x) - 0.5), point.second - (double(at.front().cell_y) - 0.5), 0};
+      for (const CurveEnd& end : at)
+        if (!((j.spokes >> end.edge) & 1u))  // the first end by an edge sets the spoke's direction
+          j.spokes |= uint8_t((1u << end.edge) | (end.outgoing ? 0u : 1u << (4 + end.edge)));
+      if (std::popcount(unsigned(j.spokes & 0x0f)) >= 2) junctions.push_back(j);
+    }
   }
 
   std::vector<EdgeCrossing> h, v;  // crossings of horizontal / vertical cell edges
   std::vector<CellPiece> pieces;
   std::map<std::pair<double, double>, std::vector<CurveEnd>> ends;  // by end point
+  std::vector<Junction> junctions;  // candidates, by end point
 
  private:
   void add_piece(int64_t x, int64_t y, int from, int to, bool at_corner = false) {
@@ -252,33 +272,95 @@ bool corner_piece_kept(const CreaseCellEdges& e, int bit) {
   return e.along[m] >= 1.0 - 1.5 * double(kCreaseMinT) && e.along[(m + 1) % 4] <= 1.5 * double(kCreaseMinT);
 }
 
-// Every cell's signature from its pieces, rows in parallel; each row counts its own, summed in row order.
-void assign_cell_signatures(const GroupedByKey<CellPiece>& by_cell, CreaseField& field, SimplifyStatistics& stats) {
+// The junctions that stay: per cell the candidate with the most spokes (ties: the first), its point moved towards
+// the centroid of the cell's edge points until it lies kCreaseMinT inside their quadrilateral (a point the
+// merged crossings left outside it); a candidate whose centroid is not that far inside is dropped, its cell keeping
+// the pairs of join_curve_ends. Sorted by cell.
+std::vector<Junction> place_junctions(std::vector<Junction> candidates, const CreaseField& field) {
+  std::stable_sort(candidates.begin(), candidates.end(), [](const Junction& a, const Junction& b) {
+    return a.cell != b.cell ? a.cell < b.cell : std::popcount(a.spokes & 0x0fu) > std::popcount(b.spokes & 0x0fu);
+  });
+  std::vector<Junction> placed;
+  for (const Junction& j : candidates) {
+    if (!placed.empty() && placed.back().cell == j.cell) continue;
+    const CreaseCellEdges e = crease_cell_edges(field, uint32_t(j.cell % field.cells_x()), uint32_t(j.cell / field.cells_x()));
+    const double margin = double(kCreaseMinT);
+    const double cu = 0.25 * (e.px[0] + e.px[1] + e.px[2] + e.px[3]), cv = 0.25 * (e.py[0] + e.py[1] + e.py[2] + e.py[3]);
+    if (!crease_point_inside_edge_points(e, cu, cv, margin)) continue;
+    // The inside is convex: along the way from the point to the centroid it is one interval ending at the centroid.
+    double lo = 0.0, hi = 1.0;
+    if (!crease_point_inside_edge_points(e, j.u, j.v, margin))
+      for (int step = 0; step < 60; ++step) {
+        const double mid = 0.5 * (lo + hi);
+        (crease_point_inside_edge_points(e, j.u + mid * (cu - j.u), j.v + mid * (cv - j.v), margin) ? hi : lo) = mid;
+      }
+    else
+      hi = 0.0;
+    placed.push_back({j.cell, j.u + hi * (cu - j.u), j.v + hi * (cv - j.v), j.spokes});
+  }
+  return placed;
+}
+
+// A junction cell's spokes: the junction's, and both edges of every other piece through the cell (bent through the
+// junction: a piece from the pair's first edge to its second runs in by the first and out by the second).
+uint8_t junction_spokes(uint8_t spokes, const CellPieces& cell) {
+  for (int bit = 0; bit < 6; ++bit) {
+    if (!cell.count[size_t(bit)]) continue;
+    const int in = cell.direction[size_t(bit)] >= 0 ? kCreasePairFirst[bit] : kCreasePairSecond[bit];
+    const int out = in == kCreasePairFirst[bit] ? kCreasePairSecond[bit] : kCreasePairFirst[bit];
+    if (!((spokes >> in) & 1u)) spokes |= uint8_t((1u << in) | (1u << (4 + in)));
+    if (!((spokes >> out) & 1u)) spokes |= uint8_t(1u << out);
+  }
+  return spokes;
+}
+
+// Every cell's signature from its pieces, rows in parallel; each row counts its own, summed in row order. The
+// junction records of the cells that are junctions, in cell order.
+void assign_cell_signatures(const GroupedByKey<CellPiece>& by_cell, const std::vector<Junction>& junctions,
+                            CreaseField& field, SimplifyStatistics& stats) {
   std::vector<uint64_t> row_deleted(field.cells_y(), 0), row_with_segments(field.cells_y(), 0);
+  std::vector<std::vector<Junction>> row_junctions(field.cells_y());
   parallel_for(0, field.cells_y(), [&](int64_t j) {
+    auto junction = std::lower_bound(junctions.begin(), junctions.end(), field.cell_index(0, uint32_t(j)),
+                                     [](const Junction& a, size_t cell) { return a.cell < cell; });
     for (uint32_t i = 0; i < field.cells_x(); ++i) {
       const size_t c = field.cell_index(i, uint32_t(j));
       field.segments[c] = 0;
-      if (by_cell.begin(c) == by_cell.end(c)) continue;  // most cells: no curve passes
+      const bool is_junction = junction != junctions.end() && junction->cell == c;
+      if (by_cell.begin(c) == by_cell.end(c) && !is_junction) continue;  // most cells: no curve passes
       CellPieces cell;
       const CreaseCellEdges edges = crease_cell_edges(field, i, uint32_t(j));
       for (size_t r = by_cell.begin(c); r < by_cell.end(c); ++r) {
         const CellPiece& piece = by_cell.records[r];
-        if (piece.at_corner && !corner_piece_kept(edges, piece.bit)) {
+        if (piece.at_corner && (is_junction || !corner_piece_kept(edges, piece.bit))) {
           ++row_deleted[size_t(j)];
           continue;
         }
         ++cell.count[size_t(piece.bit)];
         cell.direction[size_t(piece.bit)] += piece.direction;
       }
-      field.segments[c] = cell_signature(cell, row_deleted[size_t(j)]);
+      if (is_junction) {
+        Junction placed = *junction++;
+        placed.spokes = junction_spokes(placed.spokes, cell);
+        row_junctions[size_t(j)].push_back(placed);
+        field.segments[c] = kCreaseJunctionBit;
+      } else {
+        field.segments[c] = cell_signature(cell, row_deleted[size_t(j)]);
+      }
       row_with_segments[size_t(j)] += field.segments[c] != 0;
     }
   });
   for (size_t j = 0; j < row_deleted.size(); ++j) {
     stats.deleted_segments += row_deleted[j];
     stats.cells_with_segments += row_with_segments[j];
+    for (const Junction& junction : row_junctions[j]) {
+      field.junction_cells.push_back(uint32_t(junction.cell));
+      field.junction_points.push_back(float(junction.u));
+      field.junction_points.push_back(float(junction.v));
+      field.junction_spokes.push_back(junction.spokes);
+    }
   }
+  stats.junction_cells = field.junction_cells.size();
 }
 
 }  // namespace
@@ -313,6 +395,7 @@ SimplifyStatistics simplify_curves(const CurveSet& curves, CreaseField& field) {
   chunk_walks.clear();
   junctions.join_curve_ends();
   pieces.push_back(std::move(junctions.pieces));
+  std::vector<Junction> junction_candidates = std::move(junctions.junctions);
   // The three lists grouped by edge and by cell, side by side.
   GroupedByKey<EdgeCrossing> by_h, by_v;
   GroupedByKey<CellPiece> by_cell;
@@ -324,7 +407,10 @@ SimplifyStatistics simplify_curves(const CurveSet& curves, CreaseField& field) {
   });
   merge_edge_crossings(by_h, field.crossing_h, stats);
   merge_edge_crossings(by_v, field.crossing_v, stats);
-  assign_cell_signatures(by_cell, field, stats);
+  field.junction_cells.clear();
+  field.junction_points.clear();
+  field.junction_spokes.clear();
+  assign_cell_signatures(by_cell, place_junctions(std::move(junction_candidates), field), field, stats);
   return stats;
 }
 
@@ -333,9 +419,18 @@ std::vector<CurveSegment> network_segments(const CreaseField& field) {
   std::vector<std::vector<CurveSegment>> rows(field.cells_y());
   parallel_for(0, field.cells_y(), [&](int64_t j) {
     for (uint32_t i = 0; i < field.cells_x(); ++i) {
-      if (!(field.segments[field.cell_index(i, uint32_t(j))] & kCreaseSegmentBits)) continue;
+      if (!(field.segments[field.cell_index(i, uint32_t(j))] & (kCreaseSegmentBits | kCreaseJunctionBit))) continue;
       const CreaseCellEdges c = crease_cell_edges(field, i, uint32_t(j));
       const Vec2 origin(double(i) - 0.5, double(j) - 0.5);
+      if (c.junction) {  // spokes from the junction, each in its curve's direction
+        const Vec2 e = origin + Vec2(c.ex, c.ey);
+        for (int k = 0; k < 4; ++k) {
+          if (!((c.spokes >> k) & 1u)) continue;
+          const Vec2 pk = origin + Vec2(c.px[k], c.py[k]);
+          rows[size_t(j)].push_back((c.spokes >> (4 + k)) & 1u ? CurveSegment{pk, e} : CurveSegment{e, pk});
+        }
+        continue;
+      }
       for (int bit = 0; bit < 6; ++bit) {
         if (!(c.mask & (1u << bit))) continue;
         const int a = kCreasePairFirst[bit], b = kCreasePairSecond[bit];

@@ -39,6 +39,7 @@ struct SimplifyStatistics {
   double max_merge_shift = 0.0;      // texels: the farthest an input crossing moved when merged
   uint64_t cells_with_segments = 0;  // cells holding one or two segments
   uint64_t deleted_segments = 0;     // cell segments removed by the two-per-cell rule
+  uint64_t junction_cells = 0;       // cells whose creases meet at a junction point (spokes)
   nlohmann::json to_json() const;
 };
 

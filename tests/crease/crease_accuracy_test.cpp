@@ -41,14 +41,15 @@ double angle_degrees(const double n[3], const Vec3& exact) {
 // points of the m x m grids) the surface has the normals of the facets on both sides and either is right; elsewhere
 // its one normal. `near` holds the creases that may pass through the measured window.
 double error_degrees(const double n[3], const PanelLayout& layout, const std::vector<CreaseSegment>& near,
-                     const Vec2& p) {
-  double error = angle_degrees(n, panel_normal(layout, p));
+                     const Vec2& offset, const Vec2& p) {
+  double error = angle_degrees(n, panel_normal(layout, p + offset));
   for (const CreaseSegment& s : near) {
     const Vec2 d = s.b - s.a;
     const double t = std::clamp((p - s.a).dot(d) / d.squaredNorm(), 0.0, 1.0);
     if ((s.a + t * d - p).norm() > 1e-9) continue;
     const Vec2 across = Vec2(-d.y(), d.x()).normalized() * 1e-6;
-    for (const Vec2& q : std::array<Vec2, 2>{p + across, p - across}) error = std::min(error, angle_degrees(n, panel_normal(layout, q)));
+    for (const Vec2& q : std::array<Vec2, 2>{p + across, p - across})
+      error = std::min(error, angle_degrees(n, panel_normal(layout, q + offset)));
   }
   return error;
 }
@@ -56,20 +57,24 @@ double error_degrees(const double n[3], const PanelLayout& layout, const std::ve
 // Two inputs: "gen", the map `microbake gen panels` writes (central differences of the height: texels within a
 // texel of a crease mix both sides), and "exact", the exact normals point-sampled at the texel centres (each
 // sample on one side: what [Parilov05] assumes the map holds).
-void measure(const std::string& input, bool point_sampled) {
+// "shifted": the exact normals of the same surface moved by `offset` texels, curves with it, so that no crease runs
+// through a texel centre and no panel corner sits on a cell's centre (the layout in general position).
+void measure(const std::string& input, bool point_sampled, const Vec2& offset = Vec2::Zero()) {
   const MapSize size{256, 256};
   const uint32_t seed = 1;
   const PanelLayout layout = panel_layout(size, seed);
   CurveSet curves;
   std::vector<CreaseSegment> near;  // the creases whose bounding box meets the window [8, 24)^2
-  for (const CreaseSegment& s : panel_creases(layout)) {
+  for (CreaseSegment s : panel_creases(layout)) {
+    s.a -= offset, s.b -= offset;
     curves.curves.push_back({{s.a, s.b}, false, "panels"});
     if (std::max(s.a.x(), s.b.x()) >= 8 && std::min(s.a.x(), s.b.x()) <= 24 && std::max(s.a.y(), s.b.y()) >= 8 &&
         std::min(s.a.y(), s.b.y()) <= 24)
       near.push_back(s);
   }
   const NormalMap map =
-      point_sampled ? test::map_from(size.width, size.height, [&](const Vec2& p) { return panel_normal(layout, p); })
+      point_sampled
+          ? test::map_from(size.width, size.height, [&](const Vec2& p) { return panel_normal(layout, p + offset); })
                     : generate_panels(size, seed, Progress::silent());
   const BakedCrease baked = test::bake(map, curves);
   CreaseProfile none;  // b = 1 everywhere: the map's own normals, interpolated side-aware
@@ -93,8 +98,8 @@ void measure(const std::string& input, bool point_sampled) {
         bilinear_seconds += std::chrono::duration<double>(t1 - t0).count();
         crease_seconds += std::chrono::duration<double>(t2 - t1).count();
         for (size_t k = 0; k < points.size(); ++k) {
-          bilinear.push_back(error_degrees(&nb[3 * k], layout, near, points[k]));
-          crease.push_back(error_degrees(&nc[3 * k], layout, near, points[k]));
+          bilinear.push_back(error_degrees(&nb[3 * k], layout, near, offset, points[k]));
+          crease.push_back(error_degrees(&nc[3 * k], layout, near, offset, points[k]));
         }
       }
     const ErrorFigures fb = figures(bilinear), fc = figures(crease);
@@ -119,12 +124,19 @@ void measure(const std::string& input, bool point_sampled) {
     if (point_sampled && m >= 4) {
       EXPECT_LT(fc.above_10_degrees, 0.5 * fb.above_10_degrees) << "magnification " << m;
     }
+    // Issue 12's goal, half of the 5.9 degrees RMS and 45 degrees p99 measured before samples on a crease were kept
+    // out of both sides and junction cells existed: what is left is the cells where a crease ends at a sample.
+    if (point_sampled && m >= 8) {
+      EXPECT_LT(fc.rms_degrees, 2.95) << input << ", magnification " << m;
+      EXPECT_LT(fc.p99_degrees, 22.5) << input << ", magnification " << m;
+    }
   }
 }
 
 TEST(CreaseAccuracy, ReconstructionBeatsBilinearOnPanels) {
   measure("gen", false);
   measure("exact", true);
+  measure("shifted", true, Vec2(0.31, 0.17));
 }
 
 }  // namespace

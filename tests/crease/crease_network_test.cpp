@@ -14,13 +14,31 @@
 namespace mbk {
 namespace {
 
-// The allowed-configuration rules, checked directly on the field.
+// The allowed-configuration rules, checked directly on the field (junction words: by their records).
 void expect_allowed(const CreaseField& f) {
+  ASSERT_EQ(f.junction_points.size(), 2 * f.junction_cells.size());
+  ASSERT_EQ(f.junction_spokes.size(), f.junction_cells.size());
+  for (size_t n = 0; n < f.junction_cells.size(); ++n) {
+    const uint32_t i = f.junction_cells[n] % f.cells_x(), j = f.junction_cells[n] / f.cells_x();
+    if (n > 0) EXPECT_GT(f.junction_cells[n], f.junction_cells[n - 1]);
+    EXPECT_EQ(f.segments[f.junction_cells[n]], kCreaseJunctionBit);
+    const CreaseCellEdges c = crease_cell_edges(f, i, j);
+    ASSERT_TRUE(c.junction);
+    EXPECT_GE(std::popcount(unsigned(c.spokes & 0x0f)), 2);
+    EXPECT_EQ((c.spokes >> 4) & ~c.spokes & 0x0f, 0);
+    for (int k = 0; k < 4; ++k)
+      if ((c.spokes >> k) & 1u) EXPECT_TRUE(c.crossing[k]) << i << "," << j << " spoke " << k;
+    EXPECT_TRUE(crease_point_inside_edge_points(c, c.ex, c.ey, 0.5 * kCreaseMinT)) << i << "," << j;
+  }
   for (float t : f.crossing_h) EXPECT_TRUE(t == kCreaseNoCrossing || (t >= kCreaseMinT && t <= 1 - kCreaseMinT)) << t;
   for (float t : f.crossing_v) EXPECT_TRUE(t == kCreaseNoCrossing || (t >= kCreaseMinT && t <= 1 - kCreaseMinT)) << t;
   for (uint32_t j = 0; j < f.cells_y(); ++j)
     for (uint32_t i = 0; i < f.cells_x(); ++i) {
       const CreaseCellEdges c = crease_cell_edges(f, i, j);
+      if (c.mask == kCreaseJunctionBit) {
+        EXPECT_TRUE(c.junction) << i << "," << j;
+        continue;
+      }
       EXPECT_EQ(c.mask & ~(kCreaseSegmentBits | kCreaseReversedBits), 0);
       EXPECT_LE(std::popcount(unsigned(c.mask & kCreaseSegmentBits)), 2) << i << "," << j;
       EXPECT_EQ((c.mask >> 8) & ~c.mask & kCreaseSegmentBits, 0);
@@ -232,6 +250,40 @@ TEST(CreaseNetwork, PolylineCornerInsideCellKeepsASegment) {
   EXPECT_NE(f.segments[f.cell_index(4, 4)] & kCreaseSegmentBits, 0);
 }
 
+// Three curves ending at one point inside a cell, leaving by three edges: the cell is a junction at that point with
+// one spoke per edge, each in its curve's direction; the distance vanishes at the point.
+TEST(CreaseNetwork, CurvesEndingAtOnePointMakeAJunctionThere) {
+  CreaseField f;
+  f.allocate(8, 8);
+  const Vec2 j(4.3, 4.2);  // inside cell (4, 4): [3.5, 4.5]^2, cell-local (0.8, 0.7)
+  const SimplifyStatistics s = simplify_curves(test::curves_of({{j, {4.3, 0.0}}, {j, {8.0, 4.2}}, {{0.0, 8.0}, j}}), f);
+  expect_allowed(f);
+  EXPECT_EQ(s.junction_cells, 1u);
+  ASSERT_EQ(f.junction_cells, std::vector<uint32_t>{uint32_t(f.cell_index(4, 4))});
+  EXPECT_NEAR(f.junction_points[0], 0.8, 1e-6);
+  EXPECT_NEAR(f.junction_points[1], 0.7, 1e-6);
+  // Spokes to the top edge (0) and the right edge (1) run out of the junction; the third curve comes in by the
+  // bottom edge (2): from (0, 8) it reaches the cell's bottom edge at x = 3.96.
+  EXPECT_EQ(f.junction_spokes[0], 0x01 | 0x02 | 0x04 | (0x04 << 4));
+  double nearest = 1e9;
+  for (const CurveSegment& seg : network_segments(f)) nearest = std::min({nearest, (seg.a - j).norm(), (seg.b - j).norm()});
+  EXPECT_LT(nearest, 1e-6);
+}
+
+// A junction point that the cell's edge points leave outside their quadrilateral (here near corner C0, while the
+// creases leave by the right and bottom edges) is moved inside it, towards the edge points' centroid.
+TEST(CreaseNetwork, JunctionOutsideTheEdgePointsIsMovedInside) {
+  CreaseField f;
+  f.allocate(8, 8);
+  const Vec2 j(3.55, 3.56);  // cell (4, 4), cell-local (0.05, 0.06): outside the line P3 P0 (u + v = 0.5)
+  simplify_curves(test::curves_of({{j, {8.0, 3.9}}, {j, {3.9, 8.0}}, {j, {8.0, 8.0}}}), f);
+  expect_allowed(f);
+  ASSERT_EQ(f.junction_cells.size(), 1u);
+  const double u = f.junction_points[0], v = f.junction_points[1];
+  EXPECT_GT(u + v, 0.5);           // inside
+  EXPECT_LT(u + v, 0.5 + 0.01);    // and no farther than it had to go
+}
+
 TEST(CreaseNetwork, SegmentsMeetingInsideACellAreJoined) {
   // A panel corner: an outline edge from above, one from the left and the mitre, listed as three separate
   // curves ending at (4.2, 4.3), inside cell (4, 4).
@@ -240,8 +292,12 @@ TEST(CreaseNetwork, SegmentsMeetingInsideACellAreJoined) {
   const SimplifyStatistics s = simplify_curves(
       test::curves_of({{{4.2, 0.0}, {4.2, 4.3}}, {{0.0, 4.3}, {4.2, 4.3}}, {{1.1, 1.2}, {4.2, 4.3}}}), f);
   expect_allowed(f);
-  EXPECT_NE(f.segments[f.cell_index(4, 4)] & kCreaseSegmentBits, 0);
-  EXPECT_EQ(s.deleted_segments, 0u);  // the mitre enters by the same edge as one outline: two distinct pairs
+  // A junction with a spoke to the top edge and one to the left edge (the mitre enters by the same edge as one
+  // outline: two distinct edges), nothing deleted.
+  EXPECT_EQ(f.segments[f.cell_index(4, 4)], kCreaseJunctionBit);
+  ASSERT_EQ(f.junction_spokes.size(), 1u);
+  EXPECT_EQ(f.junction_spokes[0] & 0x0f, 0x01 | 0x08);
+  EXPECT_EQ(s.deleted_segments, 0u);
   // Two separate segments merely touching at a point of a cell edge are not a junction inside a cell.
   CreaseField g;
   g.allocate(8, 8);

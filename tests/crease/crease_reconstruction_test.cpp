@@ -169,6 +169,54 @@ TEST(CreaseReconstruction, SamplesOnACreaseSpeakForNeitherSide) {
   }
 }
 
+// Three planar facets meeting at a point inside a cell (random junctions, three rays to the map's border, each
+// leaving the junction's cell by its own edge: one crossing per edge is the lattice's limit): with the junction every
+// point farther than 2 kCreaseMinT from the creases gets its own facet's normal exactly. Without junctions (at most
+// two segments per cell, [Parilov05] Sec. 4.1) the junction's cell mixed two of the facets: 0.80 to 1.07 off.
+TEST(CreaseReconstruction, JunctionCellsReproduceThreeFacetsExactly) {
+  const uint32_t w = 16, h = 16;
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> cell(5, 10), quarter(0, 3);
+  std::uniform_real_distribution<double> offset(-0.2, 0.2), jitter(-15.0, 15.0), u(1.0, 15.0);
+  const Vec3 facet_normal[3] = {Vec3(0.5, 0.0, 0.8).normalized(), Vec3(-0.3, 0.4, 0.8).normalized(),
+                                Vec3(0.0, -0.6, 0.8)};
+  for (int trial = 0; trial < 40; ++trial) {
+    const Vec2 j(cell(rng) + offset(rng), cell(rng) + offset(rng));  // within 0.2 of a cell's centre
+    // Rays towards three different edges of the cell: right, down, left (y down), each within 15 degrees (which keeps
+    // it on its edge from a point within 0.2 of the centre), turned by 90-degree steps.
+    const double turn = 90.0 * quarter(rng), degrees = M_PI / 180.0;
+    const double a[3] = {(turn + jitter(rng)) * degrees, (90.0 + turn + jitter(rng)) * degrees,
+                         (180.0 + turn + jitter(rng)) * degrees};
+    std::vector<Vec2> ends;
+    for (double t : a) ends.push_back(j + 30.0 * Vec2(std::cos(t), std::sin(t)));
+    const auto facet = [&](const Vec2& p) {  // the wedge between ray k and ray k + 1 (counter-clockwise in angle)
+      const double t = std::atan2(p.y() - j.y(), p.x() - j.x());
+      for (int k = 0; k < 3; ++k) {
+        const double rel = std::remainder(t - a[k] - M_PI, 2.0 * M_PI) + M_PI;  // angle from ray k in [0, 2 pi)
+        const double gap = std::remainder(a[(k + 1) % 3] - a[k] - M_PI, 2.0 * M_PI) + M_PI;
+        if (rel < gap) return k;
+      }
+      return 0;
+    };
+    CurveSet curves;
+    for (const Vec2& e : ends) curves.curves.push_back({{j, e}, false, "ray"});
+    const BakedCrease baked = test::bake(test::map_from(w, h, [&](const Vec2& p) { return facet_normal[facet(p)]; }), curves);
+    ASSERT_EQ(baked.field.junction_cells.size(), 1u) << trial;
+    double worst = 0.0;
+    for (int k = 0; k < 4000; ++k) {
+      const Vec2 p(u(rng), u(rng));
+      bool near_crease = false;
+      for (const Vec2& e : ends) near_crease |= std::abs(test::signed_line_distance(j, e, p)) < 2 * kCreaseMinT &&
+                                              (p - j).dot(e - j) > 0.0;
+      if (near_crease || (p - j).norm() < 2 * kCreaseMinT) continue;
+      const CreaseSample s = reconstruct_crease(baked.field, p.x(), p.y());
+      const double e = (Vec3(s.normal[0], s.normal[1], s.normal[2]) - facet_normal[facet(p)]).norm();
+      worst = std::max(worst, e);
+    }
+    EXPECT_LT(worst, 1e-6) << "trial " << trial << ", junction (" << j.transpose() << ")";
+  }
+}
+
 TEST(CreaseProfiles, EquationOneClosedForms) {
   CreaseSample s;
   s.distance = 0.0;

@@ -488,6 +488,14 @@ std::vector<CorruptCase> corrupt_cases() {
       {"CreaseSideZero", 16008, [] { return test::crease_bytes([](CreaseField& f) { f.side[5] = 0; }); }},
       {"CreaseNormalBelowHorizon", 16009,
        [] { return test::crease_bytes([](CreaseField& f) { f.normals[2] = -1.0f; }); }},
+      {"CreaseJunctionWordWithoutRecord", 16010,
+       [] { return test::crease_bytes([](CreaseField& f) { f.segments[f.cell_index(2, 1)] = kCreaseJunctionBit; }); }},
+      {"CreaseJunctionWithOneSpoke", 16010,
+       [] { return test::crease_bytes([](CreaseField& f) { test::add_crease_junction(f, 2, 1, 0.2f, 0.5f, 0x01); }); }},
+      {"CreaseJunctionSpokeToUncrossedEdge", 16010,
+       [] { return test::crease_bytes([](CreaseField& f) { test::add_crease_junction(f, 2, 1, 0.2f, 0.5f, 0x03); }); }},
+      {"CreaseJunctionPointOutsideTheEdgePoints", 16010,
+       [] { return test::crease_bytes([](CreaseField& f) { test::add_crease_junction(f, 2, 1, 0.95f, 0.05f, 0x05); }); }},
   };
 }
 

@@ -33,6 +33,14 @@ inline CreaseField valid_crease_field() {
   return f;
 }
 
+// Makes cell (i, j) a junction at cell-local (u, v) with the given junction_spokes byte (the fixture's only one).
+inline void add_crease_junction(CreaseField& f, uint32_t i, uint32_t j, float u, float v, uint8_t spokes) {
+  f.segments[f.cell_index(i, j)] = kCreaseJunctionBit;
+  f.junction_cells = {uint32_t(f.cell_index(i, j))};
+  f.junction_points = {u, v};
+  f.junction_spokes = {spokes};
+}
+
 inline std::vector<uint8_t> crease_bytes(const std::function<void(CreaseField&)>& corrupt = {},
                                          const nlohmann::json& parameters = {{"width", 3}, {"height", 2}}) {
   CreaseField f = valid_crease_field();

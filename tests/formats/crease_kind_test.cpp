@@ -39,5 +39,20 @@ TEST(CreaseKind, BakedAssetIsValidAndReadsBackExactly) {
   EXPECT_EQ(f.normals, baked.field.normals);
 }
 
+// Three curves ending at one point inside a cell make a junction record; it is valid and reads back exactly.
+TEST(CreaseKind, JunctionRecordsAreValidAndReadBackExactly) {
+  const BakedCrease baked = test::bake(
+      test::flat_map(10, 10),
+      test::curves_of({{{4.3, 4.2}, {4.3, 0.0}}, {{4.3, 4.2}, {10.0, 4.2}}, {{0.0, 9.0}, {4.3, 4.2}}}));
+  ASSERT_EQ(baked.field.junction_cells.size(), 1u);
+  const std::vector<uint8_t> bytes = crease_asset_writer(baked, {}, InputRecord{}, CurvesRecord{}).serialize();
+  EXPECT_TRUE(error_ids(bytes).empty());
+  const CreaseField f = read_crease_field(Asset::parse(bytes, "memory"));
+  EXPECT_EQ(f.junction_cells, baked.field.junction_cells);
+  EXPECT_EQ(f.junction_points, baked.field.junction_points);
+  EXPECT_EQ(f.junction_spokes, baked.field.junction_spokes);
+  EXPECT_EQ(f.segments, baked.field.segments);
+}
+
 }  // namespace
 }  // namespace mbk
