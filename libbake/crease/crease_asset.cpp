@@ -69,7 +69,8 @@ AssetWriter crease_asset_writer(const BakedCrease& baked, const CreaseBakeOption
   metadata["conventions"]["signature"] =
       "crossing_h/crossing_v: t in [1/1024, 1 - 1/1024] along +x/+y from the edge's first sample, or -1; segments: "
       "bit m (0..3) joins edge points P_m and P_{m+1 mod 4} (edges top, right, bottom, left), bit 4 P0-P2, bit 5 "
-      "P1-P3, bit 8 + b reverses segment b";
+      "P1-P3, bit 8 + b reverses segment b; a word of bit 6 alone is a junction cell, its point and spokes in "
+      "junction_cells/junction_points/junction_spokes";
   metadata["conventions"]["gradient"] = "unit gradient of the distance, pointing away from the nearest point";
   metadata["conventions"]["side"] = "+1 right of the nearest directed segment as seen on screen (y down), else -1";
   metadata["statistics"] = {{"simplify", baked.simplify.to_json()},
