@@ -44,9 +44,9 @@ class CreaseCommand : public NormalMapBakingCommand {
     line << map_size() << ", " << record_.curves << " curve" << (record_.curves == 1 ? "" : "s") << ", "
          << record_.segments << " segments -> " << baked_.network_segments << " cell segments in "
          << s.cells_with_segments << " cells, " << s.merged_edges << " merged crossings (max shift "
-         << std::setprecision(3) << s.max_merge_shift << " texels), " << s.deleted_segments << " deleted, " << s.junction_cells << " junction cell"
-         << (s.junction_cells == 1 ? "" : "s") << "; band "
-         << options_.band << ", " << options_.smooth_iterations << " smoothing iterations";
+         << std::setprecision(3) << s.max_merge_shift << " texels), " << s.deleted_segments << " deleted, "
+         << s.junction_cells << " junction cell" << (s.junction_cells == 1 ? "" : "s") << "; band " << options_.band
+         << ", " << options_.smooth_iterations << " smoothing iterations";
     return line.str();
   }
 

@@ -159,7 +159,8 @@ std::string check_crease_section_shapes(const Asset& asset, uint32_t width, uint
   const SectionInfo* points = asset.find(kCreaseJunctionPointsSection);
   const SectionInfo* spokes = asset.find(kCreaseJunctionSpokesSection);
   if (!cells && !points && !spokes) return {};
-  if (!cells || !points || !spokes) return "the junction sections are not all present (junction_cells, junction_points, junction_spokes)";
+  if (!cells || !points || !spokes)
+    return "the junction sections are not all present (junction_cells, junction_points, junction_spokes)";
   const uint64_t n = cells->shape.empty() ? 0 : cells->shape[0];
   const std::vector<SectionShape> junction = {{kCreaseJunctionCellsSection, ElementType::u32, {n}},
                                               {kCreaseJunctionPointsSection, ElementType::f32, {n, 2}},

@@ -66,14 +66,14 @@ inline constexpr int kCreasePairSecond[6] = {1, 2, 3, 0, 2, 3};
 int crease_pair_bit(int a, int b);
 
 struct CreaseField {
-  uint32_t width = 0, height = 0;  // the normal map
-  std::vector<float> normals;      // [H][W][3], the map's unit normals (+Y, tangent space)
-  std::vector<float> distance;     // [H + 2][W + 2]
-  std::vector<float> gradient;     // [H + 2][W + 2][2]
-  std::vector<int8_t> side;        // [H + 2][W + 2]
-  std::vector<float> crossing_h;   // [H + 2][W + 1]
-  std::vector<float> crossing_v;   // [H + 1][W + 2]
-  std::vector<uint16_t> segments;  // [H + 1][W + 1]
+  uint32_t width = 0, height = 0;        // the normal map
+  std::vector<float> normals;            // [H][W][3], the map's unit normals (+Y, tangent space)
+  std::vector<float> distance;           // [H + 2][W + 2]
+  std::vector<float> gradient;           // [H + 2][W + 2][2]
+  std::vector<int8_t> side;              // [H + 2][W + 2]
+  std::vector<float> crossing_h;         // [H + 2][W + 1]
+  std::vector<float> crossing_v;         // [H + 1][W + 2]
+  std::vector<uint16_t> segments;        // [H + 1][W + 1]
   std::vector<uint32_t> junction_cells;  // [N], cell indices, increasing
   std::vector<float> junction_points;    // [N][2], E in cell-local coordinates
   std::vector<uint8_t> junction_spokes;  // [N], spokes and their directions

@@ -25,12 +25,10 @@ constexpr double kUnitTolerance = 1e-5;
 
 // Every float finite, and every edge crossing either none or strictly inside its edge.
 bool check_crease_values(const CreaseField& f, std::vector<Finding>& out) {
-  const std::pair<const char*, const std::vector<float>*> floats[] = {{kCreaseNormalsSection, &f.normals},
-                                                                      {kCreaseDistanceSection, &f.distance},
-                                                                      {kCreaseGradientSection, &f.gradient},
-                                                                      {kCreaseCrossingHSection, &f.crossing_h},
-                                                                      {kCreaseCrossingVSection, &f.crossing_v},
-                                                                      {kCreaseJunctionPointsSection, &f.junction_points}};
+  const std::pair<const char*, const std::vector<float>*> floats[] = {
+      {kCreaseNormalsSection, &f.normals},      {kCreaseDistanceSection, &f.distance},
+      {kCreaseGradientSection, &f.gradient},    {kCreaseCrossingHSection, &f.crossing_h},
+      {kCreaseCrossingVSection, &f.crossing_v}, {kCreaseJunctionPointsSection, &f.junction_points}};
   for (const auto& [name, values] : floats)
     for (size_t i = 0; i < values->size(); ++i)
       if (!std::isfinite((*values)[i])) {
@@ -109,7 +107,8 @@ bool check_crease_junctions(const CreaseField& f, std::vector<Finding>& out) {
       if ((spokes >> k) & 1u && !e.crossing[k])
         return finding(n, "spoke " + number_text(k) + " ends on an edge without a crossing");
     if (!crease_point_inside_edge_points(e, e.ex, e.ey, 0.0))
-      return finding(n, "the point (" + number_text(e.ex) + ", " + number_text(e.ey) + ") is not inside the edge points");
+      return finding(n,
+                     "the point (" + number_text(e.ex) + ", " + number_text(e.ey) + ") is not inside the edge points");
   }
   return true;
 }

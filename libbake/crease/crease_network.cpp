@@ -60,9 +60,9 @@ int64_t cell_of(double x, uint32_t cells) {
 }  // namespace
 
 nlohmann::json SimplifyStatistics::to_json() const {
-  return {{"input_segments", input_segments},    {"input_crossings", input_crossings},
-          {"crossed_edges", crossed_edges},      {"merged_edges", merged_edges},
-          {"max_merge_shift", max_merge_shift},  {"cells_with_segments", cells_with_segments},
+  return {{"input_segments", input_segments},     {"input_crossings", input_crossings},
+          {"crossed_edges", crossed_edges},       {"merged_edges", merged_edges},
+          {"max_merge_shift", max_merge_shift},   {"cells_with_segments", cells_with_segments},
           {"deleted_segments", deleted_segments}, {"junction_cells", junction_cells}};
 }
 
@@ -142,7 +142,7 @@ class CurveWalk {
   std::vector<EdgeCrossing> h, v;  // crossings of horizontal / vertical cell edges
   std::vector<CellPiece> pieces;
   std::map<std::pair<double, double>, std::vector<CurveEnd>> ends;  // by end point
-  std::vector<Junction> junctions;  // candidates, by end point
+  std::vector<Junction> junctions;                                  // candidates, by end point
 
  private:
   void add_piece(int64_t x, int64_t y, int from, int to, bool at_corner = false) {
@@ -205,9 +205,9 @@ class CurveWalk {
   const CreaseField& field_;
   std::vector<LineCrossing> crossings_;
   LatticeSample entry_sample_ = kNoSample;  // the sample the walk entered the current cell at, if any
-  int64_t cx_ = 0, cy_ = 0;  // the walk's current cell
-  int entry_ = -1;           // the edge through which the walk entered it (-1: the curve starts in it)
-  int first_exit_ = -1;      // the edge through which the curve left its first cell
+  int64_t cx_ = 0, cy_ = 0;                 // the walk's current cell
+  int entry_ = -1;                          // the edge through which the walk entered it (-1: the curve starts in it)
+  int first_exit_ = -1;                     // the edge through which the curve left its first cell
 };
 
 // Each crossed edge's crossing: the mean of the curves' crossings there (merged when several cross it), summed in
@@ -283,9 +283,11 @@ std::vector<Junction> place_junctions(std::vector<Junction> candidates, const Cr
   std::vector<Junction> placed;
   for (const Junction& j : candidates) {
     if (!placed.empty() && placed.back().cell == j.cell) continue;
-    const CreaseCellEdges e = crease_cell_edges(field, uint32_t(j.cell % field.cells_x()), uint32_t(j.cell / field.cells_x()));
+    const CreaseCellEdges e =
+        crease_cell_edges(field, uint32_t(j.cell % field.cells_x()), uint32_t(j.cell / field.cells_x()));
     const double margin = double(kCreaseMinT);
-    const double cu = 0.25 * (e.px[0] + e.px[1] + e.px[2] + e.px[3]), cv = 0.25 * (e.py[0] + e.py[1] + e.py[2] + e.py[3]);
+    const double cu = 0.25 * (e.px[0] + e.px[1] + e.px[2] + e.px[3]),
+                 cv = 0.25 * (e.py[0] + e.py[1] + e.py[2] + e.py[3]);
     if (!crease_point_inside_edge_points(e, cu, cv, margin)) continue;
     // The inside is convex: along the way from the point to the centroid it is one interval ending at the centroid.
     double lo = 0.0, hi = 1.0;

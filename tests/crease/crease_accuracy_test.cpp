@@ -72,10 +72,9 @@ void measure(const std::string& input, bool point_sampled, const Vec2& offset = 
         std::min(s.a.y(), s.b.y()) <= 24)
       near.push_back(s);
   }
-  const NormalMap map =
-      point_sampled
-          ? test::map_from(size.width, size.height, [&](const Vec2& p) { return panel_normal(layout, p + offset); })
-                    : generate_panels(size, seed, Progress::silent());
+  const NormalMap map = point_sampled ? test::map_from(size.width, size.height,
+                                                       [&](const Vec2& p) { return panel_normal(layout, p + offset); })
+                                      : generate_panels(size, seed, Progress::silent());
   const BakedCrease baked = test::bake(map, curves);
   CreaseProfile none;  // b = 1 everywhere: the map's own normals, interpolated side-aware
   none.blend_start = none.blend_end = 0.0;

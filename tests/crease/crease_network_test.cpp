@@ -20,14 +20,19 @@ void expect_allowed(const CreaseField& f) {
   ASSERT_EQ(f.junction_spokes.size(), f.junction_cells.size());
   for (size_t n = 0; n < f.junction_cells.size(); ++n) {
     const uint32_t i = f.junction_cells[n] % f.cells_x(), j = f.junction_cells[n] / f.cells_x();
-    if (n > 0) EXPECT_GT(f.junction_cells[n], f.junction_cells[n - 1]);
+    if (n > 0) {
+      EXPECT_GT(f.junction_cells[n], f.junction_cells[n - 1]);
+    }
     EXPECT_EQ(f.segments[f.junction_cells[n]], kCreaseJunctionBit);
     const CreaseCellEdges c = crease_cell_edges(f, i, j);
     ASSERT_TRUE(c.junction);
     EXPECT_GE(std::popcount(unsigned(c.spokes & 0x0f)), 2);
     EXPECT_EQ((c.spokes >> 4) & ~c.spokes & 0x0f, 0);
-    for (int k = 0; k < 4; ++k)
-      if ((c.spokes >> k) & 1u) EXPECT_TRUE(c.crossing[k]) << i << "," << j << " spoke " << k;
+    for (int k = 0; k < 4; ++k) {
+      if ((c.spokes >> k) & 1u) {
+        EXPECT_TRUE(c.crossing[k]) << i << "," << j << " spoke " << k;
+      }
+    }
     EXPECT_TRUE(crease_point_inside_edge_points(c, c.ex, c.ey, 0.5 * kCreaseMinT)) << i << "," << j;
   }
   for (float t : f.crossing_h) EXPECT_TRUE(t == kCreaseNoCrossing || (t >= kCreaseMinT && t <= 1 - kCreaseMinT)) << t;
@@ -208,8 +213,9 @@ TEST(CreaseNetwork, SegmentThroughLatticeVertex) {
 TEST(CreaseNetwork, CrossingAtASampleYieldsToAnotherCurvesCrossing) {
   CreaseField f;
   f.allocate(8, 8);
-  CurveSet curves = test::curves_of({{{0.2, 2.25}, {7.8, 2.25}},     // horizontal: crosses x = 3.5 at t = 0.75 of cell row 2
-                                     {{2.25, 1.25}, {5.75, 4.75}}});  // 45 degrees through the sample (4, 3) at (3.5, 2.5)
+  CurveSet curves =
+      test::curves_of({{{0.2, 2.25}, {7.8, 2.25}},      // horizontal: crosses x = 3.5 at t = 0.75 of cell row 2
+                       {{2.25, 1.25}, {5.75, 4.75}}});  // 45 degrees through the sample (4, 3) at (3.5, 2.5)
   simplify_curves(curves, f);
   expect_allowed(f);
   // The edge from sample (4, 2) to (4, 3) keeps the horizontal curve's crossing exactly.
@@ -266,7 +272,8 @@ TEST(CreaseNetwork, CurvesEndingAtOnePointMakeAJunctionThere) {
   // bottom edge (2): from (0, 8) it reaches the cell's bottom edge at x = 3.96.
   EXPECT_EQ(f.junction_spokes[0], 0x01 | 0x02 | 0x04 | (0x04 << 4));
   double nearest = 1e9;
-  for (const CurveSegment& seg : network_segments(f)) nearest = std::min({nearest, (seg.a - j).norm(), (seg.b - j).norm()});
+  for (const CurveSegment& seg : network_segments(f))
+    nearest = std::min({nearest, (seg.a - j).norm(), (seg.b - j).norm()});
   EXPECT_LT(nearest, 1e-6);
 }
 
@@ -280,8 +287,8 @@ TEST(CreaseNetwork, JunctionOutsideTheEdgePointsIsMovedInside) {
   expect_allowed(f);
   ASSERT_EQ(f.junction_cells.size(), 1u);
   const double u = f.junction_points[0], v = f.junction_points[1];
-  EXPECT_GT(u + v, 0.5);           // inside
-  EXPECT_LT(u + v, 0.5 + 0.01);    // and no farther than it had to go
+  EXPECT_GT(u + v, 0.5);         // inside
+  EXPECT_LT(u + v, 0.5 + 0.01);  // and no farther than it had to go
 }
 
 TEST(CreaseNetwork, SegmentsMeetingInsideACellAreJoined) {

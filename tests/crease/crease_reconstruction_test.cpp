@@ -200,14 +200,15 @@ TEST(CreaseReconstruction, JunctionCellsReproduceThreeFacetsExactly) {
     };
     CurveSet curves;
     for (const Vec2& e : ends) curves.curves.push_back({{j, e}, false, "ray"});
-    const BakedCrease baked = test::bake(test::map_from(w, h, [&](const Vec2& p) { return facet_normal[facet(p)]; }), curves);
+    const BakedCrease baked =
+        test::bake(test::map_from(w, h, [&](const Vec2& p) { return facet_normal[facet(p)]; }), curves);
     ASSERT_EQ(baked.field.junction_cells.size(), 1u) << trial;
     double worst = 0.0;
     for (int k = 0; k < 4000; ++k) {
       const Vec2 p(u(rng), u(rng));
       bool near_crease = false;
-      for (const Vec2& e : ends) near_crease |= std::abs(test::signed_line_distance(j, e, p)) < 2 * kCreaseMinT &&
-                                              (p - j).dot(e - j) > 0.0;
+      for (const Vec2& e : ends)
+        near_crease |= std::abs(test::signed_line_distance(j, e, p)) < 2 * kCreaseMinT && (p - j).dot(e - j) > 0.0;
       if (near_crease || (p - j).norm() < 2 * kCreaseMinT) continue;
       const CreaseSample s = reconstruct_crease(baked.field, p.x(), p.y());
       const double e = (Vec3(s.normal[0], s.normal[1], s.normal[2]) - facet_normal[facet(p)]).norm();

@@ -495,7 +495,9 @@ std::vector<CorruptCase> corrupt_cases() {
       {"CreaseJunctionSpokeToUncrossedEdge", 16010,
        [] { return test::crease_bytes([](CreaseField& f) { test::add_crease_junction(f, 2, 1, 0.2f, 0.5f, 0x03); }); }},
       {"CreaseJunctionPointOutsideTheEdgePoints", 16010,
-       [] { return test::crease_bytes([](CreaseField& f) { test::add_crease_junction(f, 2, 1, 0.95f, 0.05f, 0x05); }); }},
+       [] {
+         return test::crease_bytes([](CreaseField& f) { test::add_crease_junction(f, 2, 1, 0.95f, 0.05f, 0x05); });
+       }},
   };
 }
 

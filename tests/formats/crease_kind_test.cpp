@@ -41,9 +41,9 @@ TEST(CreaseKind, BakedAssetIsValidAndReadsBackExactly) {
 
 // Three curves ending at one point inside a cell make a junction record; it is valid and reads back exactly.
 TEST(CreaseKind, JunctionRecordsAreValidAndReadBackExactly) {
-  const BakedCrease baked = test::bake(
-      test::flat_map(10, 10),
-      test::curves_of({{{4.3, 4.2}, {4.3, 0.0}}, {{4.3, 4.2}, {10.0, 4.2}}, {{0.0, 9.0}, {4.3, 4.2}}}));
+  const BakedCrease baked =
+      test::bake(test::flat_map(10, 10),
+                 test::curves_of({{{4.3, 4.2}, {4.3, 0.0}}, {{4.3, 4.2}, {10.0, 4.2}}, {{0.0, 9.0}, {4.3, 4.2}}}));
   ASSERT_EQ(baked.field.junction_cells.size(), 1u);
   const std::vector<uint8_t> bytes = crease_asset_writer(baked, {}, InputRecord{}, CurvesRecord{}).serialize();
   EXPECT_TRUE(error_ids(bytes).empty());
