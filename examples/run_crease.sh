@@ -4,7 +4,8 @@
 # scene's crease asset, renders it with the reconstruction (the evaluator, 4 samples per pixel), with --reference
 # (the exact side-aware normals from the raw map and curves, 4 x 4 rays per pixel) and with plain normal mapping
 # (the same scene without the effect, examples/scenes/crease_plain.json: bilinear, MIP-mapped normals), compares
-# both with the reference and prints the render times. Writes EXR (linear) and PNG (for viewing) of each, rendered
+# both with the reference next to the reference's own noise floor (a second reference with another seed) and prints
+# the render times. Writes EXR (linear) and PNG (for viewing) of each, rendered
 # once per format.
 #
 #   examples/run_crease.sh [MICROBAKE [OUT_DIR]]
@@ -27,7 +28,9 @@ for ext in exr png; do
   "$exe" render "$scene" --reference 4 -o "$out/scene_reference.$ext"
   "$exe" render "$plain" --spp 4 -o "$out/scene_plain.$ext"
 done
-for name in scene_crease scene_plain; do
+# The reference's own noise floor: a second reference with another jitter seed against the first.
+"$exe" render "$scene" --reference 4 --seed 1 -o "$out/scene_reference_seed1.exr"
+for name in scene_reference_seed1 scene_crease scene_plain; do
   echo "== $name against the reference"
   "$exe" compare "$out/$name.exr" "$out/scene_reference.exr"
 done

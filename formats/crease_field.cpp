@@ -35,6 +35,14 @@ std::string shape_text(const std::vector<uint64_t>& shape) {
   return t + "]";
 }
 
+// Empty when the asset's section has the expected type and shape, else what differs.
+std::string shape_mismatch(const Asset& asset, const SectionShape& s) {
+  const SectionInfo& info = asset.section(s.name);
+  if (info.type == s.type && info.shape == s.shape) return {};
+  return "'" + std::string(s.name) + "' is " + std::string(element_name(info.type)) + " " + shape_text(info.shape) +
+         ", should be " + std::string(element_name(s.type)) + " " + shape_text(s.shape);
+}
+
 }  // namespace
 
 int crease_pair_bit(int a, int b) {
@@ -111,9 +119,8 @@ CreaseCellEdges crease_cell_edges(const CreaseField& f, uint32_t i, uint32_t j) 
   const double s02 = (cx * by - cy * bx) / (ax * by - ay * bx);
   c.ex = c.px[0] + s02 * ax;
   c.ey = s02;
-  // A diagonal's first spoke runs towards E, unless the diagonal is reversed.
-  if (c.mask & (1u << 4)) c.spokes |= 0x05 | ((c.mask >> 12) & 1u ? 0x04 : 0x01) << 4;
-  if (c.mask & (1u << 5)) c.spokes |= 0x0a | ((c.mask >> 13) & 1u ? 0x08 : 0x02) << 4;
+  if (c.mask & (1u << 4)) c.spokes |= 0x05;
+  if (c.mask & (1u << 5)) c.spokes |= 0x0a;
   return c;
 }
 
@@ -149,12 +156,8 @@ std::string parse_crease_size(const Asset& asset, uint32_t& width, uint32_t& hei
 }
 
 std::string check_crease_section_shapes(const Asset& asset, uint32_t width, uint32_t height) {
-  for (const SectionShape& s : section_shapes(width, height)) {
-    const SectionInfo& info = asset.section(s.name);
-    if (info.type != s.type || info.shape != s.shape)
-      return "'" + std::string(s.name) + "' is " + std::string(element_name(info.type)) + " " + shape_text(info.shape) +
-             ", should be " + std::string(element_name(s.type)) + " " + shape_text(s.shape);
-  }
+  for (const SectionShape& s : section_shapes(width, height))
+    if (std::string problem = shape_mismatch(asset, s); !problem.empty()) return problem;
   const SectionInfo* cells = asset.find(kCreaseJunctionCellsSection);
   const SectionInfo* points = asset.find(kCreaseJunctionPointsSection);
   const SectionInfo* spokes = asset.find(kCreaseJunctionSpokesSection);
@@ -162,15 +165,10 @@ std::string check_crease_section_shapes(const Asset& asset, uint32_t width, uint
   if (!cells || !points || !spokes)
     return "the junction sections are not all present (junction_cells, junction_points, junction_spokes)";
   const uint64_t n = cells->shape.empty() ? 0 : cells->shape[0];
-  const std::vector<SectionShape> junction = {{kCreaseJunctionCellsSection, ElementType::u32, {n}},
-                                              {kCreaseJunctionPointsSection, ElementType::f32, {n, 2}},
-                                              {kCreaseJunctionSpokesSection, ElementType::u8, {n}}};
-  for (const SectionShape& s : junction) {
-    const SectionInfo& info = asset.section(s.name);
-    if (info.type != s.type || info.shape != s.shape)
-      return "'" + std::string(s.name) + "' is " + std::string(element_name(info.type)) + " " + shape_text(info.shape) +
-             ", should be " + std::string(element_name(s.type)) + " " + shape_text(s.shape);
-  }
+  for (const SectionShape& s : {SectionShape{kCreaseJunctionCellsSection, ElementType::u32, {n}},
+                                SectionShape{kCreaseJunctionPointsSection, ElementType::f32, {n, 2}},
+                                SectionShape{kCreaseJunctionSpokesSection, ElementType::u8, {n}}})
+    if (std::string problem = shape_mismatch(asset, s); !problem.empty()) return problem;
   return {};
 }
 

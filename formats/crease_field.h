@@ -104,8 +104,8 @@ struct CreaseCellEdges {
   double along[4];      // P_k's fraction along the edge from C_k to C_{k+1}
   bool crossing[4];     // the edge has a crossing
   uint16_t mask;        // the cell's segment word
-  // The spokes E - P_k (bit k) and their directions (bit 4 + k: from P_k to E): a junction's record, or the spokes of
-  // the diagonals (P0 - P2 is spokes 0 and 2 running 0 -> 2, P1 - P3 spokes 1 and 3), 0 without either.
+  // The spokes E - P_k (bit k): a junction's record, with its directions (bit 4 + k: from P_k to E), or the spokes of
+  // the diagonals (P0 - P2 is spokes 0 and 2, P1 - P3 spokes 1 and 3; their directions are in the mask), 0 without.
   uint8_t spokes;
   bool junction;  // the word is a junction and its record was found: E = (ex, ey)
   double ex, ey;  // E: the junction, or the intersection of P0P2 and P1P3

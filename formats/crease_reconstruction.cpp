@@ -54,6 +54,12 @@ uint32_t clamp_cell(double x, uint32_t cells) {
 
 double smoothstep(double t) { return t * t * (3.0 - 2.0 * t); }
 
+// n / |n|, or the tangent-space up vector where n is zero (opposite normals cancelling).
+void normalise_or_up(double n[3]) {
+  const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  for (int c = 0; c < 3; ++c) n[c] = len > 0.0 ? n[c] / len : (c == 2 ? 1.0 : 0.0);
+}
+
 // The cell's sample at corner k (C0..C3: top-left, top-right, bottom-right, bottom-left).
 struct CellCorners {
   uint32_t i[4], j[4];
@@ -142,13 +148,8 @@ void reconstruct_bilinear(const CreaseField& f, const double p[2], const CellCor
   const RegionCornerNormals corner_normals(f, c, all);
   double n[4][3];
   for (int k = 0; k < 4; ++k) corner_normals.at(k, p, n[k]);
-  double len = 0.0;
-  for (int a = 0; a < 3; ++a) {
-    out.normal[a] = w[0] * n[0][a] + w[1] * n[1][a] + w[2] * n[2][a] + w[3] * n[3][a];
-    len += out.normal[a] * out.normal[a];
-  }
-  len = std::sqrt(len);
-  for (int a = 0; a < 3; ++a) out.normal[a] = len > 0.0 ? out.normal[a] / len : (a == 2 ? 1.0 : 0.0);
+  for (int a = 0; a < 3; ++a) out.normal[a] = w[0] * n[0][a] + w[1] * n[1][a] + w[2] * n[2][a] + w[3] * n[3][a];
+  normalise_or_up(out.normal);
 }
 
 // The partition of a cell with crossings (Sec. 4.2): vertices C0..C3 (0..3), P0..P3 (4..7) and E (8) in cell-local
@@ -305,8 +306,8 @@ CreaseSample reconstruct_crease(const CreaseField& f, double x, double y) {
     const int v = c.tri[best][std::max_element(lambda, lambda + 3) - lambda];
     out.gradient[0] = value[v].g[0], out.gradient[1] = value[v].g[1];
   }
-  const double nlen = std::sqrt(r.n[0] * r.n[0] + r.n[1] * r.n[1] + r.n[2] * r.n[2]);
-  for (int k = 0; k < 3; ++k) out.normal[k] = nlen > 0.0 ? r.n[k] / nlen : (k == 2 ? 1.0 : 0.0);
+  std::copy(r.n, r.n + 3, out.normal);
+  normalise_or_up(out.normal);
   return out;
 }
 
@@ -317,13 +318,8 @@ void bilinear_normal(const CreaseField& f, double x, double y, double out[3]) {
   const float* n10 = f.sample_normal(ci + 1, cj);
   const float* n01 = f.sample_normal(ci, cj + 1);
   const float* n11 = f.sample_normal(ci + 1, cj + 1);
-  double len = 0.0;
-  for (int c = 0; c < 3; ++c) {
-    out[c] = (1 - v) * ((1 - u) * n00[c] + u * n10[c]) + v * ((1 - u) * n01[c] + u * n11[c]);
-    len += out[c] * out[c];
-  }
-  len = std::sqrt(len);
-  for (int c = 0; c < 3; ++c) out[c] = len > 0.0 ? out[c] / len : (c == 2 ? 1.0 : 0.0);
+  for (int c = 0; c < 3; ++c) out[c] = (1 - v) * ((1 - u) * n00[c] + u * n10[c]) + v * ((1 - u) * n01[c] + u * n11[c]);
+  normalise_or_up(out);
 }
 
 double CreaseProfile::slope(double d, int side) const {

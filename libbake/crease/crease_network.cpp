@@ -2,8 +2,8 @@
 #include "libbake/crease/crease_network.h"
 
 #include <algorithm>
-#include <bit>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <map>
 
@@ -289,16 +289,18 @@ std::vector<Junction> place_junctions(std::vector<Junction> candidates, const Cr
     const double cu = 0.25 * (e.px[0] + e.px[1] + e.px[2] + e.px[3]),
                  cv = 0.25 * (e.py[0] + e.py[1] + e.py[2] + e.py[3]);
     if (!crease_point_inside_edge_points(e, cu, cv, margin)) continue;
-    // The inside is convex: along the way from the point to the centroid it is one interval ending at the centroid.
-    double lo = 0.0, hi = 1.0;
-    if (!crease_point_inside_edge_points(e, j.u, j.v, margin))
+    // The inside is convex: along the way from the point to the centroid it is one interval ending at the centroid;
+    // the point moves by the smallest fraction of that way that reaches it (bisection).
+    double move = 0.0;
+    if (!crease_point_inside_edge_points(e, j.u, j.v, margin)) {
+      double lo = 0.0;
+      move = 1.0;
       for (int step = 0; step < 60; ++step) {
-        const double mid = 0.5 * (lo + hi);
-        (crease_point_inside_edge_points(e, j.u + mid * (cu - j.u), j.v + mid * (cv - j.v), margin) ? hi : lo) = mid;
+        const double mid = 0.5 * (lo + move);
+        (crease_point_inside_edge_points(e, j.u + mid * (cu - j.u), j.v + mid * (cv - j.v), margin) ? move : lo) = mid;
       }
-    else
-      hi = 0.0;
-    placed.push_back({j.cell, j.u + hi * (cu - j.u), j.v + hi * (cv - j.v), j.spokes});
+    }
+    placed.push_back({j.cell, j.u + move * (cu - j.u), j.v + move * (cv - j.v), j.spokes});
   }
   return placed;
 }
@@ -331,10 +333,10 @@ void assign_cell_signatures(const GroupedByKey<CellPiece>& by_cell, const std::v
       const bool is_junction = junction != junctions.end() && junction->cell == c;
       if (by_cell.begin(c) == by_cell.end(c) && !is_junction) continue;  // most cells: no curve passes
       CellPieces cell;
-      const CreaseCellEdges edges = crease_cell_edges(field, i, uint32_t(j));
       for (size_t r = by_cell.begin(c); r < by_cell.end(c); ++r) {
         const CellPiece& piece = by_cell.records[r];
-        if (piece.at_corner && (is_junction || !corner_piece_kept(edges, piece.bit))) {
+        if (piece.at_corner &&
+            (is_junction || !corner_piece_kept(crease_cell_edges(field, i, uint32_t(j)), piece.bit))) {
           ++row_deleted[size_t(j)];
           continue;
         }
@@ -397,7 +399,6 @@ SimplifyStatistics simplify_curves(const CurveSet& curves, CreaseField& field) {
   chunk_walks.clear();
   junctions.join_curve_ends();
   pieces.push_back(std::move(junctions.pieces));
-  std::vector<Junction> junction_candidates = std::move(junctions.junctions);
   // The three lists grouped by edge and by cell, side by side.
   GroupedByKey<EdgeCrossing> by_h, by_v;
   GroupedByKey<CellPiece> by_cell;
@@ -412,7 +413,7 @@ SimplifyStatistics simplify_curves(const CurveSet& curves, CreaseField& field) {
   field.junction_cells.clear();
   field.junction_points.clear();
   field.junction_spokes.clear();
-  assign_cell_signatures(by_cell, place_junctions(std::move(junction_candidates), field), field, stats);
+  assign_cell_signatures(by_cell, place_junctions(std::move(junctions.junctions), field), field, stats);
   return stats;
 }
 
