@@ -22,7 +22,6 @@ SceneLighting load_scene_lighting(const Scene& scene) {
 }
 
 Vec3 facing_viewer(const Vec3& n, const Vec3& v) {
-  constexpr double kMinCosView = 0.01;
   const double c = n.dot(v);
   return c >= kMinCosView ? n : Vec3((n + (kMinCosView - c) * v).normalized());  // n' . v = 0.01 / |n'| > 0
 }
@@ -58,11 +57,13 @@ Vec3 shade(const SceneLighting& lighting, const Brdf& brdf, const ShadingPoint& 
     const double cos_l = n.dot(l);
     if (cos_l > 0.0) radiance += evaluate_brdf(brdf, n, l, point.to_viewer).cwiseProduct(e) * cos_l;
   });
-  if (lighting.has_distant) {
-    radiance += brdf.albedo.cwiseProduct(sh_irradiance(lighting.distant, n)) / std::numbers::pi;
-    radiance += distant_specular(lighting, brdf.f0, n, point.to_viewer, brdf.lobe.alpha);
-  }
-  return radiance;
+  return radiance + shade_distant(lighting, brdf, n, point.to_viewer, brdf.lobe.alpha);
+}
+
+Vec3 shade_distant(const SceneLighting& lighting, const Brdf& brdf, const Vec3& n, const Vec3& v, double alpha) {
+  if (!lighting.has_distant) return Vec3::Zero();
+  return brdf.albedo.cwiseProduct(sh_irradiance(lighting.distant, n)) / std::numbers::pi +
+         distant_specular(lighting, brdf.f0, n, v, alpha);
 }
 
 Vec3 background(const SceneLighting& lighting, const Vec3& direction) {

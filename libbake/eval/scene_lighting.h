@@ -38,7 +38,8 @@ struct ShadingPoint {
   Vec3 to_viewer;         // unit
 };
 
-// The shading normal actually used: `normal`, bent towards the viewer when n . v < 0.01 (see above).
+// The shading normal actually used: `normal`, bent towards the viewer when n . v < kMinCosView (see above).
+inline constexpr double kMinCosView = 0.01;
 Vec3 facing_viewer(const Vec3& normal, const Vec3& to_viewer);
 // Calls light(l, e, distance) for every point and directional light above the geometric horizon at `position`
 // (n_g . l > 0): l the unit direction towards the light, e its irradiance on a surface facing it, distance
@@ -52,6 +53,9 @@ void for_each_direct_light(const SceneLighting& lighting, const Vec3& position, 
 Vec3 distant_specular(const SceneLighting& lighting, const Vec3& f0, const Vec3& n, const Vec3& v, double alpha);
 // Radiance towards the viewer, linear RGB.
 Vec3 shade(const SceneLighting& lighting, const Brdf& brdf, const ShadingPoint& point);
+// Its distant-lighting part around the unit normal n (already facing the viewer), with the specular lobe's alpha:
+// the diffuse irradiance and distant_specular (zero without distant lights).
+Vec3 shade_distant(const SceneLighting& lighting, const Brdf& brdf, const Vec3& n, const Vec3& v, double alpha);
 // What a ray that hits nothing sees.
 Vec3 background(const SceneLighting& lighting, const Vec3& direction);
 

@@ -2,10 +2,14 @@
 #include "libbake/eval/toksvig_effect.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <numbers>
 
 #include "libbake/eval/filtered_ndf_shading.h"
+#include "libbake/eval/lobe_specular.h"
 #include "libbake/eval/mip_effect.h"
+#include "libbake/eval/scene_lighting.h"
 
 namespace mbk {
 namespace {
@@ -33,9 +37,19 @@ class ToksvigShader : public MaterialShader {
     const double len = m.norm();
     // As material_normals.cpp: a mean shorter than 1e-6 has lost its direction (and its lobe is flat).
     const Vec3 n = len > 1e-6 ? Vec3(m / len) : Vec3::UnitZ();
-    Brdf widened = brdf;
-    widened.lobe.alpha = clamp_filtered_alpha(brdf.lobe.alpha, toksvig_beckmann_alpha(brdf.lobe.alpha, len));
-    return shade(*c.lighting, widened, {c.position, c.frame.N, c.frame.to_world(n).normalized(), c.to_viewer});
+    const double widened = clamp_filtered_alpha(brdf.lobe.alpha, toksvig_beckmann_alpha(brdf.lobe.alpha, len));
+    // The spread as a vMF lobe: variance 1 / kappa per axis is Toksvig's sigma^2 (the same alpha' either way).
+    const double kappa = 1.0 / toksvig_variance(len);
+    const Vec3& v = c.to_viewer;
+    const Vec3 mu = c.frame.to_world(n).normalized();
+    const Vec3 bent = facing_viewer(mu, v);
+    const std::array<SpecularLobe, 1> lobe{{{1.0, mu, kappa, widened}}};
+    Vec3 out = Vec3::Zero();
+    for_each_direct_light(*c.lighting, c.position, c.frame.N, [&](const Vec3& l, const Vec3& e, double) {
+      const Vec3 diffuse = brdf.albedo * (std::max(0.0, bent.dot(l)) / std::numbers::pi);
+      out += (diffuse + lobes_specular(brdf, lobe, l, v)).cwiseProduct(e);
+    });
+    return out + shade_distant(*c.lighting, brdf, bent, v, widened);
   }
 
  private:

@@ -8,6 +8,7 @@
 #include "formats/asset.h"
 #include "libbake/eval/filtered_ndf_shading.h"
 #include "libbake/eval/filtered_ndf_textures.h"
+#include "libbake/eval/lobe_specular.h"
 
 namespace mbk {
 namespace {
@@ -24,25 +25,26 @@ class VmfShader : public MaterialShader {
     const Vec3& v = c.to_viewer;
     // The lobes in world space, each with its widened roughness (Eq. 7.21).
     std::vector<VmfLobeShape> lobes;
+    std::vector<SpecularLobe> specular_lobes;  // the same, unbent, for lobe_specular.h (which bends its own points)
     std::vector<Brdf> widened;
     std::vector<std::vector<double>> filtered;  // rhat_l Lambda_l(kappa_j), once per lobe (Eqs. 7.14, 7.23)
     const FootprintProbes probes = footprint_probes(c.uv, c.footprint, texture_->width(), texture_->height());
     for (VmfLobeShape lobe : texture_->lookup(probes)) {
       if (!(lobe.alpha > 0.0)) continue;
-      lobe.mu = facing_viewer(f.to_world(lobe.mu).normalized(), v);
+      const Vec3 mu = f.to_world(lobe.mu).normalized();
+      lobe.mu = facing_viewer(mu, v);
       Brdf b = brdf;
       b.lobe.alpha = clamp_filtered_alpha(brdf.lobe.alpha, vmf_filtered_beckmann_alpha(brdf.lobe.alpha, lobe.kappa));
       lobes.push_back(lobe);
       widened.push_back(b);
+      specular_lobes.push_back({lobe.alpha, mu, lobe.kappa, b.lobe.alpha});
       filtered.push_back(vmf_filtered_rhat(rhat_diffuse_, lobe.kappa));
     }
 
     Vec3 out = Vec3::Zero();
     for_each_direct_light(*c.lighting, c.position, f.N, [&](const Vec3& l, const Vec3& e, double) {
       const double diffuse = std::max(0.0, vmf_filtered_brdf(lobes, filtered, l));  // Eq. (7.14)
-      Vec3 specular = Vec3::Zero();
-      for (size_t j = 0; j < lobes.size(); ++j)
-        specular += lobes[j].alpha * evaluate_specular(widened[j], lobes[j].mu, l, v) * lobes[j].mu.dot(l);
+      const Vec3 specular = lobes_specular(brdf, specular_lobes, l, v);
       out += (brdf.albedo * (diffuse / kPi) + specular).cwiseProduct(e);
     });
     if (c.lighting->has_distant) {

@@ -8,9 +8,12 @@
 //     albedo / pi * max(0, sum_j alpha_j sum_l A_l Lambda_l(kappa_j) (2l + 1) / (4 pi) P_l(l . mu_j))  Eq. (7.14)
 //     with A_l the clamped cosine's rhat to order kVmfDiffuseOrder and the exact Bessel ratios Lambda_l
 //     (libbake/core/vmf_lobe.h), not Eq. (7.19)'s exp(-l^2 / (2 kappa));
-//   specular, per light: sum_j alpha_j f_s(l, v; n = mu_j, alpha_j'), the renderer's microfacet lobe around
-//     mu_j with alpha_j' = min(sqrt(alpha^2 + 2 / kappa_j), kMaxFilteredAlpha)                          Eq. (7.21)
-//     (filtered_ndf_shading.h vmf_filtered_beckmann_alpha);
+//   specular, per light: sum_j alpha_j S_j (lobe_specular.h): where lobe j is narrow against the view's and the
+//     light's horizons, f_s(l, v; n = mu_j, alpha_j') (n . l), the renderer's microfacet lobe around mu_j with
+//     alpha_j' = min(sqrt(alpha^2 + 2 / kappa_j), kMaxFilteredAlpha)                                   Eq. (7.21)
+//     (filtered_ndf_shading.h vmf_filtered_beckmann_alpha); where it reaches a horizon (the grazing far field),
+//     the reference's per-normal shading integrated over the wide lobes (deviation [Han07]: its product form is
+//     2-10x off there);
 //   distant lighting (order-2 SH): diffuse = albedo / pi * sum_j alpha_j max(0, sum_l A_l Lambda_l(kappa_j)
 //     sum_m L_lm Y_lm(mu_j)) (Eq. (7.23), vmf_sh_lighting); specular = sum_j alpha_j times the renderer's vMF
 //     lobe at mu_j's mirror direction with alpha_j' (deviation [Han07]: Eq. (7.24)'s half-vector lighting is

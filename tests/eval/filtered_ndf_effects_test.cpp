@@ -152,6 +152,26 @@ TEST(FilteredNdfEffects, FinestLevelEqualsPlainNormalMapping_EnvironmentLight) {
   }
 }
 
+// The first row whose pixels all differ from the sky row 0 shows, after the row the horizon crosses.
+uint32_t first_row_below_the_horizon(const Image& im) {
+  const auto sky = [&](uint32_t row) {
+    for (uint32_t x = 0; x < im.width; ++x)
+      if (im.at(x, row, 0) != im.at(0, 0, 0)) return false;
+    return true;
+  };
+  uint32_t row = 0;
+  while (row < im.height && sky(row)) ++row;
+  return row + 1;
+}
+
+// The rows from `first` down.
+Image crop_rows(const Image& im, uint32_t first) {
+  Image out = im;
+  out.height = im.height - first;
+  out.pixels.assign(im.pixels.begin() + ptrdiff_t(size_t(first) * im.width * im.channels), im.pixels.end());
+  return out;
+}
+
 // A plane receding to the horizon under a glossy highlight: footprints from ~4 texels to the whole map.
 json receding(const json& effect) {
   return plane_scene(
@@ -165,18 +185,23 @@ TEST(FilteredNdfEffects, RecedingPlaneIsCloserToTheReferenceThanPlainMip) {
   ScratchDir dir("filtered_receding");
   testing::write_bumpy_map(dir / "map.exr", 32, 32);
   const Image reference = render_with(dir, receding("mip"), 12);
+  // Below the horizon: the row the horizon crosses is part sky in the reference and all plane or all sky at one
+  // sample per pixel, whatever the method (coverage, not filtering); it is left out with the sky above it.
+  const uint32_t sky_rows = first_row_below_the_horizon(reference);
+  ASSERT_LT(sky_rows + 8, reference.height);
   const auto error = [&](const json& effect) {
-    return compare_images(render_with(dir, receding(effect)), reference).rmse;
+    return compare_images(crop_rows(render_with(dir, receding(effect)), sky_rows), crop_rows(reference, sky_rows)).rmse;
   };
   const double mip = error("mip"), toksvig = error("toksvig");
   const double sh = error({{"name", "sh"}, {"order", 16}}), vmf = error({{"name", "vmf"}, {"lobes", 4}});
   std::cout << "rmse vs reference: mip " << mip << ", toksvig " << toksvig << ", sh16 " << sh << ", vmf4 " << vmf
             << " (mean " << mean(reference) << ")\n";
-  // Measured: mip 0.83, toksvig 0.35, sh16 0.50, vmf4 0.45 (mean 0.38; before anisotropic probes mip 0.93,
-  // toksvig 0.50, sh16 0.54, vmf4 0.47).
-  EXPECT_LT(sh, 0.65 * mip);
-  EXPECT_LT(vmf, 0.6 * mip);
-  EXPECT_LT(toksvig, 0.6 * mip);
+  // Measured below the horizon's row: mip 1.19, toksvig 0.65, sh16 0.70, vmf4 0.69 (mean 0.38), nearly all of it in
+  // the first row, the horizon's glare; from the next row on, toksvig 0.23 and vmf4 0.21 against 0.40 and 0.39 with
+  // every factor of the specular at the lobe's mean (before lobe_specular.h), mip 0.68.
+  EXPECT_LT(sh, 0.7 * mip);
+  EXPECT_LT(vmf, 0.65 * mip);
+  EXPECT_LT(toksvig, 0.65 * mip);
 }
 
 TEST(FilteredNdfEffects, ShNearSurfaceDoesNotRing) {
