@@ -59,8 +59,7 @@ class BehindHorizon {
     rho_ = std::exp(-std::sqrt(alpha * alpha + delta * delta));
   }
   Vec3 point(double u1, double u2) const {
-    const double psi =
-        psi_h_ + 2.0 * std::atan((1.0 - rho_) / (1.0 + rho_) * std::tan(std::numbers::pi * (u2 - 0.5)));
+    const double psi = psi_h_ + 2.0 * std::atan((1.0 - rho_) / (1.0 + rho_) * std::tan(std::numbers::pi * (u2 - 0.5)));
     // s >= 0 from the end of the interval the density leans towards, exponential of rate |a| (exponents <= 0).
     const double rate = std::abs(a_);
     const double s_end = rate < 1e-9 ? u1 * kLength : -std::log1p(u1 * std::expm1(-rate * kLength)) / rate;
@@ -73,8 +72,7 @@ class BehindHorizon {
     const double t = n.dot(v_);
     if (!(t < kMinCosView)) return 0.0;
     const double psi = std::atan2(n.dot(e2_), n.dot(e1_));
-    const double wrapped =
-        (1.0 - rho_ * rho_) / (kTwoPi * (1.0 + rho_ * rho_ - 2.0 * rho_ * std::cos(psi - psi_h_)));
+    const double wrapped = (1.0 - rho_ * rho_) / (kTwoPi * (1.0 + rho_ * rho_ - 2.0 * rho_ * std::cos(psi - psi_h_)));
     const double rate = std::abs(a_), s_end = a_ > 0.0 ? kMinCosView - t : t + 1.0;
     const double along = rate < 1e-9 ? 1.0 / kLength : rate * std::exp(-rate * s_end) / -std::expm1(-rate * kLength);
     return wrapped * along;

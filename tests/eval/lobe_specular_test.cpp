@@ -6,39 +6,17 @@
 
 #include <cmath>
 #include <numbers>
-#include <random>
 #include <vector>
 
 #include "libbake/eval/filtered_ndf_shading.h"
 #include "libbake/eval/lobe_specular.h"
 #include "libbake/eval/scene_lighting.h"
+#include "tests/eval/lobe_mean.h"
 
 namespace mbk {
 namespace {
 
 const Brdf kGlossy{Vec3::Zero(), Vec3(0.5, 0.5, 0.5), {Distribution::ggx, 0.15}};
-
-// The reference's specular times cosine for one texel normal.
-double reference_phi(const Brdf& brdf, const Vec3& n0, const Vec3& l, const Vec3& v) {
-  const Vec3 n = facing_viewer(n0, v);
-  const double cos_l = n.dot(l);
-  return cos_l > 0.0 ? evaluate_specular(brdf, n, l, v)[0] * cos_l : 0.0;
-}
-
-// The mean of reference_phi over `count` normals of vMF(mu, kappa), by rejection from uniform directions.
-double monte_carlo(const Brdf& brdf, const Vec3& mu, double kappa, const Vec3& l, const Vec3& v, int count) {
-  std::mt19937_64 rng(12345);
-  std::normal_distribution<double> gauss;
-  std::uniform_real_distribution<double> uniform;
-  double sum = 0.0;
-  for (int kept = 0; kept < count;) {
-    const Vec3 n = Vec3(gauss(rng), gauss(rng), gauss(rng)).normalized();
-    if (uniform(rng) >= std::exp(kappa * (mu.dot(n) - 1.0))) continue;
-    sum += reference_phi(brdf, n, l, v);
-    ++kept;
-  }
-  return sum / count;
-}
 
 Vec3 from_elevation(double elevation_degrees, double azimuth_degrees) {
   const double e = elevation_degrees * std::numbers::pi / 180, a = azimuth_degrees * std::numbers::pi / 180;
@@ -63,7 +41,7 @@ TEST(LobeSpecular, MatchesTheLobesMeanOfTheReferenceShading) {
         for (double azimuth : {180.0, 120.0}) {
           const Vec3 v = from_elevation(view, 0.0), l = from_elevation(light, azimuth);
           const SpecularLobe one = lobe(mu, kappa, kGlossy);
-          const double reference = monte_carlo(kGlossy, mu, kappa, l, v, 20000);
+          const double reference = test::lobe_mean_by_rejection(kGlossy, mu, kappa, l, v, 20000);
           const double integrated = lobes_specular_integrated(kGlossy, {&one, 1}, l, v)[0];
           Brdf widened = kGlossy;
           widened.lobe.alpha = one.widened_alpha;
@@ -85,8 +63,8 @@ TEST(LobeSpecular, MixtureOfTwoLobesMatchesTheirWeightedMeans) {
   std::vector<SpecularLobe> lobes{lobe(a, 20.0, kGlossy), lobe(b, 8.0, kGlossy)};
   lobes[0].weight = 0.7;
   lobes[1].weight = 0.3;
-  const double reference =
-      0.7 * monte_carlo(kGlossy, a, 20.0, l, v, 40000) + 0.3 * monte_carlo(kGlossy, b, 8.0, l, v, 40000);
+  const double reference = 0.7 * test::lobe_mean_by_rejection(kGlossy, a, 20.0, l, v, 40000) +
+                           0.3 * test::lobe_mean_by_rejection(kGlossy, b, 8.0, l, v, 40000);
   EXPECT_NEAR(lobes_specular(kGlossy, lobes, l, v)[0], reference, 0.1 * reference);
 }
 
@@ -95,7 +73,7 @@ TEST(LobeSpecular, OneNormalIsTheReferenceShading) {
   for (const Vec3& mu : {Vec3(0.2, 0.1, 1.0).normalized(), Vec3(0.0, 0.9, 0.1).normalized()}) {
     const Vec3 v = from_elevation(3.0, 0.0), l = from_elevation(15.0, 175.0);
     const SpecularLobe one = lobe(mu, INFINITY, kGlossy);
-    EXPECT_EQ(lobes_specular(kGlossy, {&one, 1}, l, v)[0], reference_phi(kGlossy, mu, l, v));
+    EXPECT_EQ(lobes_specular(kGlossy, {&one, 1}, l, v)[0], test::reference_specular(kGlossy, mu, l, v));
   }
 }
 
@@ -121,7 +99,7 @@ TEST(LobeSpecular, UniformLobeAndEmptyLobesStayFinite) {
   const double s = lobes_specular(kGlossy, {&uniform, 1}, l, v)[0];
   EXPECT_TRUE(std::isfinite(s));
   EXPECT_GE(s, 0.0);
-  EXPECT_NEAR(s, monte_carlo(kGlossy, Vec3::UnitZ(), 0.0, l, v, 40000), 0.15 * s);
+  EXPECT_NEAR(s, test::lobe_mean_by_rejection(kGlossy, Vec3::UnitZ(), 0.0, l, v, 40000), 0.15 * s);
   SpecularLobe empty = uniform;
   empty.weight = 0.0;
   EXPECT_EQ(lobes_specular(kGlossy, {&empty, 1}, l, v)[0], 0.0);

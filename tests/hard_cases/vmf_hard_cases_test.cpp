@@ -12,8 +12,10 @@
 
 #include "libbake/core/vmf_lobe.h"
 #include "libbake/eval/filtered_ndf_shading.h"
+#include "libbake/eval/lobe_specular.h"
 #include "libbake/filter/vmf_mixture.h"
 #include "libbake/filter/vmf_pyramid.h"
+#include "tests/eval/lobe_mean.h"
 #include "tests/hard_cases/hard_case_checks.h"
 
 namespace mbk {
@@ -167,6 +169,43 @@ TEST(HardCases, VmfShaderLobeAtTheCapShadesAsItsNormal) {
       EXPECT_NEAR(vmf_filtered_brdf(std::span(&lobe, 1), rhat, w), 0.7 * delta, blur) << kappa;
     }
   }
+}
+
+// Protects against: a filtered specular lobe that reaches the view horizon shading with its mean's factors (the
+// grazing far field): most of the reference's light there comes from the normals behind the view, bent onto it.
+// A wide lobe (kappa 4, a third of it behind a view 1 degree above the plane, the light 3 degrees above on the far
+// side) within 8% of its mean by rejection sampling; a lobe whose mean lies exactly on the view horizon (mu . v = 0)
+// and a light exactly on the lobe's horizon (mu . l = 0) finite, non-negative and within 8%; kappa 1e-300 and 1e6
+// at the view horizon finite and within 8% / equal to the bent normal's shading.
+TEST(HardCases, VmfShaderLobeReachingTheViewHorizon) {
+  const Brdf brdf{Vec3::Zero(), Vec3(0.5, 0.5, 0.5), {Distribution::ggx, 0.15}};
+  const auto at = [](double elevation_degrees, double azimuth_degrees) {
+    const double e = elevation_degrees * kPi / 180, a = azimuth_degrees * kPi / 180;
+    return Vec3(std::sin(a) * std::cos(e), std::cos(a) * std::cos(e), std::sin(e));
+  };
+  const auto specular = [&](const Vec3& mu, double kappa, const Vec3& l, const Vec3& v) {
+    const SpecularLobe lobe{1.0, mu, kappa, clamp_filtered_alpha(0.15, vmf_filtered_beckmann_alpha(0.15, kappa))};
+    return lobes_specular(brdf, {&lobe, 1}, l, v)[0];
+  };
+  const Vec3 v = at(1.0, 0.0), l = at(3.0, 180.0);
+  struct Case {
+    Vec3 mu;
+    double kappa;
+    Vec3 l;
+  };
+  const Vec3 on_view_horizon = Vec3(0.0, 0.0, 1.0).cross(v).cross(v).normalized() * -1.0;
+  for (const Case& c : {Case{Vec3::UnitZ(), 4.0, l}, Case{on_view_horizon, 10.0, l},
+                        Case{Vec3::UnitZ(), 20.0, at(0.0, 180.0)}, Case{Vec3::UnitZ(), 1e-300, l}}) {
+    const double s = specular(c.mu, c.kappa, c.l, v);
+    ASSERT_TRUE(std::isfinite(s)) << c.kappa;
+    EXPECT_GE(s, 0.0) << c.kappa;
+    const double reference = test::lobe_mean_by_rejection(brdf, c.mu, c.kappa, c.l, v, 40000);
+    EXPECT_NEAR(s, reference, 0.08 * reference + 1e-4) << "mu " << c.mu.transpose() << ", kappa " << c.kappa;
+  }
+  const double sharp = specular(Vec3::UnitZ(), 1e6, l, v);
+  EXPECT_TRUE(std::isfinite(sharp));
+  EXPECT_NEAR(sharp, test::reference_specular(brdf, Vec3::UnitZ(), l, v),
+              0.08 * test::reference_specular(brdf, Vec3::UnitZ(), l, v));
 }
 
 }  // namespace
