@@ -101,6 +101,11 @@ double vmf_log_density(double kappa, double cos_angle) {
   return std::log(kappa / (2.0 * std::numbers::pi * one_minus)) + kappa * (cos_angle - 1.0);
 }
 
+double vmf_cos_from_uniform(double kappa, double u) {
+  if (kappa < 1e-9) return 1.0 - 2.0 * u;
+  return std::clamp(1.0 + std::log1p(u * std::expm1(-2.0 * kappa)) / kappa, -1.0, 1.0);
+}
+
 void vmf_band_factors(double kappa, std::span<double> out) {
   if (out.empty()) return;
   const int order = int(out.size()) - 1;

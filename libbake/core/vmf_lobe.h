@@ -42,6 +42,11 @@ double vmf_kappa_from_mean_length(double r, double kappa_max);
 // log g(n; kappa, mu) from cos = mu.n, for kappa >= 0: log(kappa / (2 pi (1 - exp(-2 kappa)))) + kappa (cos - 1).
 double vmf_log_density(double kappa, double cos_angle);
 
+// The cosine of the angle from mu of a direction drawn from the lobe by u in [0, 1): the exact inverse of its
+// distribution function, cos = 1 + log(1 + u (e^{-2 kappa} - 1)) / kappa (log1p and expm1: no cancellation near the
+// axis), clamped to [-1, 1]; kappa below 1e-9 gives the uniform 1 - 2 u. The azimuth is uniform and independent.
+double vmf_cos_from_uniform(double kappa, double u);
+
 // Lambda_l(kappa) = I_{l+1/2}(kappa) / I_{1/2}(kappa) for l = 0..out.size()-1; Lambda_0 = 1; kappa = 0 gives
 // 0 for l >= 1; kappa = +inf gives 1. Relative accuracy ~1e-14 (tests compare with quadrature to 1e-10).
 void vmf_band_factors(double kappa, std::span<double> out);

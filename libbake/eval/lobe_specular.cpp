@@ -41,13 +41,6 @@ const std::array<LatticePoint, kLobeSpecularPoints>& lattice() {
   return points;
 }
 
-// cos(angle from mu) of the vMF's inverse CDF at u in (0, 1): w = 1 + log(1 + (1 - u) expm1(-2 kappa)) / kappa
-// (no cancellation for small kappa; kappa -> 0 gives the uniform 2 u - 1); expm1_2k = expm1(-2 kappa).
-double vmf_inverse_cdf(double kappa, double expm1_2k, double u) {
-  if (kappa < 1e-9) return 2.0 * u - 1.0;
-  return std::clamp(1.0 + std::log1p((1.0 - u) * expm1_2k) / kappa, -1.0, 1.0);
-}
-
 // tan^2 of a microfacet normal's angle from the mean at u in (0, 1) for D(m) (m . n) as a density.
 double microfacet_inverse_cdf_tan2(const MicrofacetLobe& lobe, double u) {
   const double a2 = lobe.alpha * lobe.alpha;
@@ -128,17 +121,16 @@ Vec3 lobes_specular_integrated(const Brdf& brdf, std::span<const SpecularLobe> l
     if (!(cos_l > 0.0 && cos_v > 0.0)) return 0.0;
     return microfacet_d(brdf.lobe, bent.dot(h)) * smith_g2(brdf.lobe, cos_l, cos_v) / (4.0 * cos_v);
   };
-  // Per lobe: its frame, log normalisation and expm1(-2 kappa).
+  // Per lobe: its frame and log normalisation.
   struct Prepared {
     Vec3 x, y;
-    double log_norm, expm1_2k;
+    double log_norm;
   };
   std::vector<Prepared> prepared(lobes.size());
   double lobe_slope = 0.0, total = 0.0;
   for (size_t j = 0; j < lobes.size(); ++j) {
     complete_frame(lobes[j].mu, prepared[j].x, prepared[j].y);
     prepared[j].log_norm = vmf_log_density(lobes[j].kappa, 1.0);
-    prepared[j].expm1_2k = std::expm1(-2.0 * lobes[j].kappa);
     lobe_slope += lobes[j].weight * lobes[j].kappa * lobes[j].mu.dot(v);
     total += lobes[j].weight;
   }
@@ -169,7 +161,7 @@ Vec3 lobes_specular_integrated(const Brdf& brdf, std::span<const SpecularLobe> l
   for (size_t j = 0; j < lobes.size(); ++j)
     for (const LatticePoint& u : lattice()) {
       // Behind the view horizon only the lobes' points reach a normal; in front, D's points share it.
-      const double w = vmf_inverse_cdf(lobes[j].kappa, prepared[j].expm1_2k, u.u1);
+      const double w = vmf_cos_from_uniform(lobes[j].kappa, 1.0 - u.u1);
       add(direction(lobes[j].mu, prepared[j].x, prepared[j].y, w, u.cos_phi, u.sin_phi), s);
     }
   Vec3 x, y;

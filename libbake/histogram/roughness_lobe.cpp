@@ -20,8 +20,7 @@ double roughness_lobe(double cos_angle, double sigma) {
 
 Vec3 sample_roughness_lobe(const Vec3& mu, double sigma, double u1, double u2) {
   const double kappa = lobe_kappa(sigma);
-  // cos from the inverse of its distribution function, without cancellation near the axis (log1p, expm1).
-  const double c = std::clamp(1.0 + std::log1p(u1 * std::expm1(-2.0 * kappa)) / kappa, -1.0, 1.0);
+  const double c = vmf_cos_from_uniform(kappa, u1);
   const double s = std::sqrt(std::max(0.0, 1.0 - c * c));
   const double phi = 2.0 * std::numbers::pi * u2;
   // An orthonormal frame around mu (Duff et al. 2017).
