@@ -154,11 +154,16 @@ VmfLobeShape vmf_lobe_from_premultiplied(double alpha, const Vec3& alpha_r, doub
   VmfLobeShape lobe;
   if (!(alpha > 0.0)) return lobe;
   const Vec3 r = alpha_r / alpha;
-  const double length = r.norm();
   lobe.alpha = alpha;
-  lobe.kappa = vmf_kappa_from_mean_length(length, kappa_max);
-  if (length > 0.0) lobe.mu = r / length;
+  lobe.kappa = vmf_kappa_from_mean_length(r.norm(), kappa_max);
+  lobe.mu = vmf_direction_from_premultiplied(alpha, alpha_r);
   return lobe;
+}
+
+Vec3 vmf_direction_from_premultiplied(double alpha, const Vec3& alpha_r) {
+  const Vec3 r = alpha_r / alpha;
+  const double length = r.norm();
+  return length > 0.0 ? Vec3(r / length) : Vec3::UnitZ();
 }
 
 }  // namespace mbk

@@ -59,5 +59,7 @@ struct VmfLobeShape {
   Vec3 mu = Vec3::UnitZ();
 };
 VmfLobeShape vmf_lobe_from_premultiplied(double alpha, const Vec3& alpha_r, double kappa_max);
+// The same lobe's direction only (no concentration to solve for): mu = r / |r|, +z for r = 0; alpha > 0.
+Vec3 vmf_direction_from_premultiplied(double alpha, const Vec3& alpha_r);
 
 }  // namespace mbk

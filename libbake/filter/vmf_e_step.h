@@ -6,9 +6,10 @@
 // kappa_j, so the exponent is <= 0 for every kappa), normalised by a log-sum-exp around the largest term: a term
 // more than 40 nats below it is taken as 0 without evaluating exp (e^-40 ~ 4e-18 is below half an ulp of the sum,
 // which is >= 1), and exp and log are the branch-free fast_exp / fast_log (libbake/core/fast_exp_log.h).
-// Normals go through in blocks of four, side by side as GCC vectors (a lobe negligible for all four needs no exp),
-// accumulated per lane; the lanes are added in lane order at the end of each kVmfSumChunk chunk, and the chunks in
-// chunk order, so the sums are the same whatever the vector width and thread count. A texel of more than one
+// Normals go through in blocks of four, side by side as GCC vectors, four blocks in flight at once (a lobe
+// negligible for all of them needs no exp), accumulated per lane (normal i in lane i mod 4, in normal order); the
+// lanes are added in lane order at the end of each kVmfSumChunk chunk, and the chunks in chunk order, so the sums
+// are the same whatever the vector width, blocks in flight and thread count. A texel of more than one
 // chunk splits its chunks across the threads.
 #pragma once
 

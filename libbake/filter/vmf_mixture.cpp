@@ -61,7 +61,8 @@ void reseed(std::span<const WeightedNormal> normals, std::vector<VmfComponent>& 
   const double kappa = vmf_kappa_from_mean_length(pooled / live_alpha, kappa_max);
   const LobeTerms t = lobe_terms(mixture);
   std::vector<double> log_p(N);
-  for (size_t i = 0; i < N; ++i) log_p[i] = log_mixture_density(t, normals[i].n) - std::log(live_alpha);
+  const double log_live_alpha = std::log(live_alpha);
+  for (size_t i = 0; i < N; ++i) log_p[i] = log_mixture_density(t, normals[i].n) - log_live_alpha;
   std::vector<size_t> order(N);
   for (size_t i = 0; i < N; ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return log_p[a] < log_p[b]; });

@@ -126,10 +126,11 @@ void move_slots(float* texel, const std::vector<int>& source, int width) {
       texel[s * size_t(width) + size_t(f)] = source[s] < 0 ? 0.0f : before[size_t(source[s]) * width + size_t(f)];
 }
 
-void add_targets(const VmfLevel& level, uint32_t i, uint32_t j, int J, std::vector<Vec3>& t, double kappa_max) {
-  const auto m = decode_texel(level, i, j, J, kappa_max);
-  for (int s = 0; s < J; ++s)
-    if (m[size_t(s)].alpha > 0.0) t[size_t(s)] += m[size_t(s)].alpha * m[size_t(s)].mu;
+// Adds alpha mu of each stored lobe of texel (i, j) to its slot's target (no concentration: the targets need none).
+void add_targets(const VmfLevel& level, uint32_t i, uint32_t j, int J, std::vector<Vec3>& t) {
+  const float* p = &level.lobes[(size_t(j) * level.width + i) * size_t(J) * 4];
+  for (int s = 0; s < J; ++s, p += 4)
+    if (p[0] > 0.0f) t[size_t(s)] += double(p[0]) * vmf_direction_from_premultiplied(p[0], Vec3(p[1], p[2], p[3]));
 }
 
 // The EM statistics of a level (its log-likelihood is measured on the stored lobes afterwards).
@@ -177,8 +178,8 @@ double stored_log_likelihood(const NormalMap& map, const VmfLevel& level, int J,
   std::vector<double> ll(count);
   for_each_texel(int64_t(count), normals_per_texel(map, level.width, level.height), [&](int64_t t) {
     const uint32_t i = uint32_t(size_t(t) % level.width), j = uint32_t(size_t(t) / level.width);
-    std::vector<WeightedNormal> normals;
-    std::vector<float> unused;
+    thread_local std::vector<WeightedNormal> normals;  // reused: most texels of the fine levels are tiny
+    thread_local std::vector<float> unused;
     gather(map, nullptr, g, i, j, normals, unused);
     ll[size_t(t)] = vmf_mixture_log_likelihood(normals, decode_texel(level, i, j, J, kappa_max));
   });
@@ -314,11 +315,10 @@ void align_level(const PyramidFit& p, VmfPyramid& pyramid, size_t k) {
     std::vector<Vec3> t(size_t(J), Vec3::Zero());
     if (!top) {
       const VmfLevel& parent = pyramid.levels[k + 1];
-      add_targets(parent, uint32_t((i + 0.5) * parent.width / w), uint32_t((j + 0.5) * parent.height / h), J, t,
-                  p.kappa_max);
-      if (i > 0) add_targets(level, i - 1, j, J, t, p.kappa_max);
-      if (j > 0) add_targets(level, i, j - 1, J, t, p.kappa_max);
-      if (i > 0 && j > 0) add_targets(level, i - 1, j - 1, J, t, p.kappa_max);
+      add_targets(parent, uint32_t((i + 0.5) * parent.width / w), uint32_t((j + 0.5) * parent.height / h), J, t);
+      if (i > 0) add_targets(level, i - 1, j, J, t);
+      if (j > 0) add_targets(level, i, j - 1, J, t);
+      if (i > 0 && j > 0) add_targets(level, i - 1, j - 1, J, t);
     }
     const std::vector<int> source = top ? by_amplitude(mixture) : assign_slots(mixture, t);
     const size_t texel = size_t(j) * w + i;
