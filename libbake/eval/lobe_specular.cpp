@@ -196,4 +196,17 @@ Vec3 lobes_specular(const Brdf& brdf, std::span<const SpecularLobe> lobes, const
   return out;
 }
 
+bool lobe_specular_is_product(const SpecularLobe& lobe, const Vec3& l, const Vec3& v) {
+  return !(lobe.kappa < INFINITY) || narrow(lobe, facing_viewer(lobe.mu, v), l, v);
+}
+
+Vec3 lobe_corrected_specular(const Vec3& product, const Vec3& lobe_product, const Vec3& lobe_integrated) {
+  Vec3 out;
+  for (int c = 0; c < 3; ++c) {
+    const double p = product[c], q = lobe_product[c], integrated = lobe_integrated[c];
+    out[c] = p < q ? p * integrated / q : integrated + (p - q);
+  }
+  return out;
+}
+
 }  // namespace mbk

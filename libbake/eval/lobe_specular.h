@@ -53,4 +53,21 @@ Vec3 lobes_specular(const Brdf& brdf, std::span<const SpecularLobe> lobes, const
 // The same, every lobe integrated (tests compare the two paths; lobes of kappa = +inf are not allowed here).
 Vec3 lobes_specular_integrated(const Brdf& brdf, std::span<const SpecularLobe> lobes, const Vec3& l, const Vec3& v);
 
+// Whether lobes_specular takes [Han07]'s product for this lobe (one normal, or narrow against the geometry), rather
+// than integrating it.
+bool lobe_specular_is_product(const SpecularLobe& lobe, const Vec3& l, const Vec3& v);
+
+// The specular of an NDF that is not a vMF lobe, known only as a product - `product`, its own D at h times every
+// other factor at its mean normal (the `sh` shader's Eq. 7.12) - corrected with the vMF lobe of the same mean (and
+// mean length) where that lobe is wide: `lobe_product` is the lobe's specular by the same product (its D through the
+// same expansion, the same other factors) and `lobe_integrated` its integral over the lobe (lobes_specular). Per
+// channel, with p, q, I these three:
+//     p <  q:  p I / q      (the share of the lobe's D the NDF has at h gets the lobe's geometric correction I / q)
+//     p >= q:  I + (p - q)  (the lobe's integral, plus the NDF's excess over the lobe, e.g. a second cluster of
+//                            normals, left as a product: nothing says how the lobe's correction applies to it)
+// So a vMF NDF (p = q) shades as its integral (also where q = 0: the normals bent onto the view horizon reflect
+// what no product sees), a lobe without correction (I = q) leaves p unchanged, the result is continuous in p
+// (for q > 0), at most I + p, and nothing is divided by 0.
+Vec3 lobe_corrected_specular(const Vec3& product, const Vec3& lobe_product, const Vec3& lobe_integrated);
+
 }  // namespace mbk

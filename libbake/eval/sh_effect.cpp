@@ -12,6 +12,7 @@
 #include "libbake/core/vmf_lobe.h"
 #include "libbake/eval/filtered_ndf_shading.h"
 #include "libbake/eval/filtered_ndf_textures.h"
+#include "libbake/eval/lobe_specular.h"
 #include "libbake/eval/sh_lobe_tail.h"
 
 namespace mbk {
@@ -53,6 +54,7 @@ class ShNdfShader : public MaterialShader {
         rhat_specular_(microfacet_rhat(Brdf::of(material).lobe, texture_->order())),
         unwindowed_(size_t(texture_->order()) + 1, 1.0),
         tail_(Brdf::of(material).lobe, texture_->order()),
+        lobe_bands_(Brdf::of(material).lobe, -1),
         rule_(degree4_rule()) {}
 
   Vec3 radiance(const ShadingContext& c, const Brdf& brdf) const override {
@@ -86,15 +88,31 @@ class ShNdfShader : public MaterialShader {
     // normal (sh_lobe_tail.h), so a sharp NDF under a narrow lobe neither rings nor smears.
     const double kappa = vmf_kappa_from_mean_length(std::min(1.0, len), INFINITY);
     const Vec3 mu = len > 1e-6 ? Vec3(mean / len) : Vec3::UnitZ();
+    // The vMF lobe of the mean (lobe_specular.h): where it is wide, the product below misses how 1 / (n . v), G2
+    // and the bending of normals behind the view horizon vary over the NDF, and lobe_corrected_specular applies the
+    // lobe's integral to it.
+    const SpecularLobe lobe{1.0, f.to_world(mu).normalized(), kappa, spread.lobe.alpha};
     Vec3 out = Vec3::Zero();
     for_each_direct_light(*c.lighting, c.position, f.N, [&](const Vec3& l, const Vec3& e, double) {
       const double diffuse = std::max(0.0, sh_filtered_brdf(basis_, g, window, rhat_diffuse_, to_tangent(l)));
-      const Vec3 specular = evaluate_specular(spread, n, l, c.to_viewer, [&](const Vec3& h) {
-        const Vec3 h_tangent = to_tangent(h);
-        return std::max(0.0, sh_filtered_brdf(basis_, g, unwindowed_, rhat_specular_, h_tangent) +
-                                 tail_.value(h_tangent.dot(mu), kappa));
-      });
-      out += (brdf.albedo * (diffuse / kPi) + specular * n.dot(l)).cwiseProduct(e);
+      Vec3 specular =
+          evaluate_specular(spread, n, l, c.to_viewer,
+                            [&](const Vec3& h) {
+                              const Vec3 h_tangent = to_tangent(h);
+                              return std::max(0.0, sh_filtered_brdf(basis_, g, unwindowed_, rhat_specular_, h_tangent) +
+                                                       tail_.value(h_tangent.dot(mu), kappa));
+                            }) *
+          n.dot(l);
+      if (!lobe_specular_is_product(lobe, l, c.to_viewer)) {
+        // The lobe's D through the same expansion: every band of the vMF lobe (the tail from band 0).
+        const Vec3 lobe_product =
+            evaluate_specular(spread, n, l, c.to_viewer,
+                              [&](const Vec3& h) { return lobe_bands_.value(to_tangent(h).dot(mu), kappa); }) *
+            n.dot(l);
+        specular = lobe_corrected_specular(specular, lobe_product,
+                                           lobes_specular_integrated(brdf, std::span(&lobe, 1), l, c.to_viewer));
+      }
+      out += (brdf.albedo * (diffuse / kPi) + specular).cwiseProduct(e);
     });
     if (c.lighting->has_distant) {
       // integral g_2(n) E(n) dn over the sphere, g_2 = sum_{l <= 2} window_l g_lm Y_lm.
@@ -117,6 +135,7 @@ class ShNdfShader : public MaterialShader {
   std::vector<double> rhat_diffuse_, rhat_specular_;
   std::vector<double> unwindowed_;  // the specular's stored bands are completed, not windowed
   ShLobeTail tail_;
+  ShLobeTail lobe_bands_;  // every band of the vMF lobe of the mean (a tail from band 0)
   SphereRule rule_;
 };
 

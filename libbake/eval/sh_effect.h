@@ -11,7 +11,11 @@
 //     denominators evaluated at the mean normal n = (g_11, g_1-1, g_10) / sqrt(3 / (4 pi)), normalised
 //     (the paper's "radially symmetric lobe times a factor of l and v"; [Han07] Sec. 7.3). G2 is that of the
 //     lobe widened by Toksvig's variance of |mean| (the filtered surface is rougher, and at grazing angles
-//     its masking matters: with the base alpha the far field of a receding plane is several times too bright);
+//     its masking matters: with the base alpha the far field of a receding plane is several times too bright).
+//     Where the vMF lobe of the mean (kappa = A^-1(|mean|)) is wide against the view's or the light's horizon
+//     (lobe_specular.h), that product is corrected by the lobe: lobe_corrected_specular(product, the lobe's own
+//     product with its D through every band, the lobe's integral) - a deviation from [Han07], whose product is
+//     2-10x too dark on a rough far field at grazing angles;
 //   distant lighting (order-2 SH): diffuse = albedo / pi * integral g_2(n) E(n) dn, g_2 the NDF's bands
 //     l <= 2 and E the renderer's irradiance, by a product quadrature exact for degree 4 (the integral is
 //     the SH dot product rotated into the tangent frame, Eq. (7.23); exact where E >= 0, which the renderer

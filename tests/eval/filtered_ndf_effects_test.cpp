@@ -189,19 +189,28 @@ TEST(FilteredNdfEffects, RecedingPlaneIsCloserToTheReferenceThanPlainMip) {
   // sample per pixel, whatever the method (coverage, not filtering); it is left out with the sky above it.
   const uint32_t sky_rows = first_row_below_the_horizon(reference);
   ASSERT_LT(sky_rows + 8, reference.height);
-  const auto error = [&](const json& effect) {
-    return compare_images(crop_rows(render_with(dir, receding(effect)), sky_rows), crop_rows(reference, sky_rows)).rmse;
+  // From `first` down: the whole far field, and without its first row (the horizon's glare, where every method
+  // overshoots the reference's mean 2.1 with 3.5-3.8).
+  const auto error = [&](const json& effect, uint32_t first) {
+    return compare_images(crop_rows(render_with(dir, receding(effect)), first), crop_rows(reference, first)).rmse;
   };
-  const double mip = error("mip"), toksvig = error("toksvig");
-  const double sh = error({{"name", "sh"}, {"order", 16}}), vmf = error({{"name", "vmf"}, {"lobes", 4}});
+  const json sh16 = {{"name", "sh"}, {"order", 16}}, vmf4 = {{"name", "vmf"}, {"lobes", 4}};
+  const double mip = error("mip", sky_rows), toksvig = error("toksvig", sky_rows), sh = error(sh16, sky_rows),
+               vmf = error(vmf4, sky_rows);
+  const double mip_below = error("mip", sky_rows + 1), toksvig_below = error("toksvig", sky_rows + 1),
+               sh_below = error(sh16, sky_rows + 1), vmf_below = error(vmf4, sky_rows + 1);
   std::cout << "rmse vs reference: mip " << mip << ", toksvig " << toksvig << ", sh16 " << sh << ", vmf4 " << vmf
-            << " (mean " << mean(reference) << ")\n";
-  // Measured below the horizon's row: mip 1.19, toksvig 0.65, sh16 0.70, vmf4 0.69 (mean 0.38), nearly all of it in
-  // the first row, the horizon's glare; from the next row on, toksvig 0.23 and vmf4 0.21 against 0.40 and 0.39 with
-  // every factor of the specular at the lobe's mean (before lobe_specular.h), mip 0.68.
-  EXPECT_LT(sh, 0.7 * mip);
+            << "; below the glare row: mip " << mip_below << ", toksvig " << toksvig_below << ", sh16 " << sh_below
+            << ", vmf4 " << vmf_below << " (mean " << mean(reference) << ")\n";
+  // Measured: mip 1.19, toksvig 0.65, sh16 0.82, vmf4 0.69 (mean 0.38); below the glare row mip 0.68, toksvig 0.19,
+  // vmf4 0.19, sh16 0.27. Before lobe_specular.h (every factor at the lobe's mean) toksvig and vmf4 were 0.40 and
+  // 0.39 there, and sh16 0.57 before its lobe correction (lobe_corrected_specular).
+  EXPECT_LT(sh, 0.75 * mip);
   EXPECT_LT(vmf, 0.65 * mip);
   EXPECT_LT(toksvig, 0.65 * mip);
+  EXPECT_LT(sh_below, 0.45 * mip_below);
+  EXPECT_LT(vmf_below, 0.35 * mip_below);
+  EXPECT_LT(toksvig_below, 0.35 * mip_below);
 }
 
 TEST(FilteredNdfEffects, ShNearSurfaceDoesNotRing) {

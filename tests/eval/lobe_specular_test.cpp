@@ -105,5 +105,45 @@ TEST(LobeSpecular, UniformLobeAndEmptyLobesStayFinite) {
   EXPECT_EQ(lobes_specular(kGlossy, {&empty, 1}, l, v)[0], 0.0);
 }
 
+// lobe_corrected_specular: a vMF NDF (its product is the lobe's) shades as the lobe's integral; a lobe whose
+// integral is its product leaves any NDF unchanged; continuous where the NDF's product crosses the lobe's; bounded
+// by integral + product; a lobe product of 0 divides nothing; per channel.
+TEST(LobeSpecular, CorrectedSpecularKeepsTheLobesIntegralAndTheNdfsShape) {
+  const Vec3 integrated(0.9, 0.6, 0.3), lobe_product(0.3, 0.2, 0.1);
+  EXPECT_TRUE(lobe_corrected_specular(lobe_product, lobe_product, integrated).isApprox(integrated, 1e-15));
+  for (const Vec3& product : {Vec3(0.0, 0.1, 0.7), Vec3(0.05, 0.2, 0.0), Vec3(2.0, 1e-9, 0.1)})
+    EXPECT_TRUE(lobe_corrected_specular(product, lobe_product, lobe_product).isApprox(product, 1e-15)) << product;
+  for (int c = 0; c < 3; ++c) {
+    const double q = lobe_product[c];
+    const auto at = [&](double p) {
+      Vec3 product = lobe_product;
+      product[c] = p;
+      return lobe_corrected_specular(product, lobe_product, integrated)[c];
+    };
+    EXPECT_NEAR(at(q * (1 - 1e-12)), at(q * (1 + 1e-12)), 1e-9);
+    for (double p : {0.0, 0.25 * q, q, 4.0 * q, 100.0 * q}) {
+      EXPECT_GE(at(p), 0.0) << p;
+      EXPECT_LE(at(p), integrated[c] + p + 1e-15) << p;
+    }
+    EXPECT_NEAR(at(0.5 * q), 0.5 * integrated[c], 1e-15);      // the NDF has half the lobe's D at h
+    EXPECT_NEAR(at(3.0 * q), integrated[c] + 2.0 * q, 1e-15);  // the excess over the lobe stays a product
+  }
+  // The lobe's D is 0 at h (its integral comes from the normals bent onto the view horizon): the integral, plus
+  // what the NDF has there.
+  const Vec3 none = lobe_corrected_specular(Vec3(0.4, 0.0, 0.0), Vec3::Zero(), integrated);
+  EXPECT_TRUE(none.allFinite());
+  EXPECT_EQ(none, Vec3(0.4 + 0.9, 0.6, 0.3));
+}
+
+// Which path lobes_specular takes: one normal and narrow lobes are products, a lobe reaching a horizon is not.
+TEST(LobeSpecular, ProductPathIsOneNormalOrANarrowLobe) {
+  const Vec3 mu = Vec3(0.05, 0.02, 1.0).normalized();
+  const Vec3 v = from_elevation(50.0, 0.0), l = from_elevation(55.0, 185.0);
+  EXPECT_TRUE(lobe_specular_is_product(lobe(mu, INFINITY, kGlossy), l, v));
+  EXPECT_TRUE(lobe_specular_is_product(lobe(mu, 5000.0, kGlossy), l, v));
+  EXPECT_FALSE(lobe_specular_is_product(lobe(mu, 3.0, kGlossy), l, v));
+  EXPECT_FALSE(lobe_specular_is_product(lobe(mu, 5000.0, kGlossy), from_elevation(1.0, 185.0), v));
+}
+
 }  // namespace
 }  // namespace mbk
