@@ -44,6 +44,9 @@ double mean_length_derivative(double k) {
   return 1.0 / (k * k) - 4.0 * e / (d * d);
 }
 
+// r / |r| for a mean resultant r of length |r| (+z for r = 0).
+Vec3 unit_resultant(const Vec3& r, double length) { return length > 0.0 ? Vec3(r / length) : Vec3::UnitZ(); }
+
 }  // namespace
 
 double vmf_mean_length(double kappa) {
@@ -154,16 +157,16 @@ VmfLobeShape vmf_lobe_from_premultiplied(double alpha, const Vec3& alpha_r, doub
   VmfLobeShape lobe;
   if (!(alpha > 0.0)) return lobe;
   const Vec3 r = alpha_r / alpha;
+  const double length = r.norm();
   lobe.alpha = alpha;
-  lobe.kappa = vmf_kappa_from_mean_length(r.norm(), kappa_max);
-  lobe.mu = vmf_direction_from_premultiplied(alpha, alpha_r);
+  lobe.kappa = vmf_kappa_from_mean_length(length, kappa_max);
+  lobe.mu = unit_resultant(r, length);
   return lobe;
 }
 
 Vec3 vmf_direction_from_premultiplied(double alpha, const Vec3& alpha_r) {
   const Vec3 r = alpha_r / alpha;
-  const double length = r.norm();
-  return length > 0.0 ? Vec3(r / length) : Vec3::UnitZ();
+  return unit_resultant(r, r.norm());
 }
 
 }  // namespace mbk
