@@ -46,10 +46,11 @@ std::array<double, 2> divide_bounds(double m, double n_lo, double n_hi, const We
   return {m + n_lo / (n_lo >= 0.0 ? w.max : w.min), m + n_hi / (n_hi >= 0.0 ? w.min : w.max)};
 }
 
-}  // namespace
-
-RmqBounds blend_range_bounds(GlintBlendMode mode, const Vec2& f_lo, const Vec2& f_hi,
-                             const std::array<RmqBounds, 4>& corner, const Vec2& mean, const StandardizationLut* lut) {
+// blend_range_bounds with the corners already in blend space (histogram: G of the leaf bounds), so that a caller
+// holding G of every code (GlintRangeQuery) skips the forward lookups.
+RmqBounds blend_bounds_in_blend_space(GlintBlendMode mode, const Vec2& f_lo, const Vec2& f_hi,
+                                      const std::array<RmqBounds, 4>& corner, const Vec2& mean,
+                                      const StandardizationLut* lut) {
   std::array<double, 4> out{};  // min_x, max_x, min_y, max_y
   for (int ch = 0; ch < 2; ++ch) {
     std::array<double, 4> lo, hi;
@@ -73,10 +74,7 @@ RmqBounds blend_range_bounds(GlintBlendMode mode, const Vec2& f_lo, const Vec2& 
     } else {
       const bool histogram = mode == GlintBlendMode::histogram;
       const double m = histogram ? 0.0 : mean[ch];
-      for (int k = 0; k < 4; ++k) {
-        lo[k] = (histogram ? lut->channels[ch].standardize(lo[k]).value : lo[k]) - m;
-        hi[k] = (histogram ? lut->channels[ch].standardize(hi[k]).value : hi[k]) - m;
-      }
+      for (int k = 0; k < 4; ++k) lo[k] -= m, hi[k] -= m;
       const WeightNormRange w = weight_norm_range(f_lo, f_hi);
       b_lo = divide_bounds(m, bilinear_extremes(f_lo, f_hi, lo)[0], 0.0, w)[0];
       b_hi = divide_bounds(m, 0.0, bilinear_extremes(f_lo, f_hi, hi)[1], w)[1];
@@ -91,6 +89,20 @@ RmqBounds blend_range_bounds(GlintBlendMode mode, const Vec2& f_lo, const Vec2& 
   return {out[0], out[1], out[2], out[3]};
 }
 
+}  // namespace
+
+RmqBounds blend_range_bounds(GlintBlendMode mode, const Vec2& f_lo, const Vec2& f_hi,
+                             const std::array<RmqBounds, 4>& corner, const Vec2& mean, const StandardizationLut* lut) {
+  if (mode != GlintBlendMode::histogram) return blend_bounds_in_blend_space(mode, f_lo, f_hi, corner, mean, lut);
+  std::array<RmqBounds, 4> standardized;
+  for (int k = 0; k < 4; ++k) {
+    const StandardizationChannelTables* c = lut->channels.data();
+    standardized[k] = {c[0].standardize(corner[k].min_x).value, c[0].standardize(corner[k].max_x).value,
+                       c[1].standardize(corner[k].min_y).value, c[1].standardize(corner[k].max_y).value};
+  }
+  return blend_bounds_in_blend_space(mode, f_lo, f_hi, standardized, mean, lut);
+}
+
 GlintRangeQuery::GlintRangeQuery(const GlintPointQuery& point, const RmqTableView& rmq)
     : point_(&point), rmq_(&rmq), side_(point.grid().patch_side() / 2) {
   if (point.grid().patch_side() % 2 != 0)
@@ -103,6 +115,25 @@ GlintRangeQuery::GlintRangeQuery(const GlintPointQuery& point, const RmqTableVie
                     " example, the point query's example is " + std::to_string(point.example().width) + "x" +
                     std::to_string(point.example().height),
                 "range query");
+  if (point.mode() == GlintBlendMode::histogram) {  // G of every code's value, read by corners_of below
+    const uint32_t codes = rmq_code_max(rmq.layout().bits) + 1;
+    for (int ch = 0; ch < 2; ++ch) {
+      const RmqQuantizer q(rmq.range()[size_t(ch)], rmq.layout().bits);
+      gaussian_of_code_[size_t(ch)].resize(codes);
+      for (uint32_t c = 0; c < codes; ++c)
+        gaussian_of_code_[size_t(ch)][c] = point.lut()->channels[size_t(ch)].standardize(q.value(c)).value;
+    }
+  }
+}
+
+RmqBounds GlintRangeQuery::corner_bounds(const RmqCodes& c) const {
+  if (gaussian_of_code_[0].empty()) return rmq_->dequantize(c);
+  return {gaussian_of_code_[0][c.min_x], gaussian_of_code_[0][c.max_x], gaussian_of_code_[1][c.min_y],
+          gaussian_of_code_[1][c.max_y]};
+}
+
+RmqBounds GlintRangeQuery::blend(const Vec2& f_lo, const Vec2& f_hi, const std::array<RmqBounds, 4>& corner) const {
+  return blend_bounds_in_blend_space(point_->mode(), f_lo, f_hi, corner, point_->example_mean(), point_->lut());
 }
 
 std::array<uint32_t, 2> GlintRangeQuery::example_texel(int64_t patch_i, int64_t patch_j, int corner, uint32_t x,
@@ -118,14 +149,14 @@ RmqBounds GlintRangeQuery::node_bounds(const TargetNode& node, uint32_t* lookups
   for (int k = 0; k < 4; ++k) {
     const std::array<uint32_t, 2> e = example_texel(node.patch_i, node.patch_j, k, node.x0, node.y0);
     uint32_t count = 0;
-    corner[k] = rmq_->dequantize(rmq_->query_codes(e[0], e[1], node.width, node.height, &count));
+    corner[k] = corner_bounds(rmq_->query_codes(e[0], e[1], node.width, node.height, &count));
     total += count;
   }
   if (lookups) *lookups = total;
   const double h = side_;
   const Vec2 f_lo((node.x0 + 0.5) / h, (node.y0 + 0.5) / h);
   const Vec2 f_hi((node.x0 + node.width - 0.5) / h, (node.y0 + node.height - 0.5) / h);
-  return blend_range_bounds(point_->mode(), f_lo, f_hi, corner, point_->example_mean(), point_->lut());
+  return blend(f_lo, f_hi, corner);
 }
 
 RmqBounds GlintRangeQuery::element_bounds(int64_t t0, int64_t t1) const {
@@ -136,10 +167,10 @@ RmqBounds GlintRangeQuery::element_bounds(int64_t t0, int64_t t1) const {
   std::array<RmqBounds, 4> corner;
   for (int k = 0; k < 4; ++k) {
     const std::array<uint32_t, 2> e = example_texel(i, j, k, x, y);
-    corner[k] = rmq_->query(e[0], e[1], 1, 1);
+    corner[k] = corner_bounds(rmq_->entry(0, e[0], e[1]));
   }
   const Vec2 f((x + 0.5) / double(h), (y + 0.5) / double(h));
-  return blend_range_bounds(point_->mode(), f, f, corner, point_->example_mean(), point_->lut());
+  return blend(f, f, corner);
 }
 
 }  // namespace mbk

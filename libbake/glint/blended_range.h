@@ -43,6 +43,7 @@
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
 #include "formats/rmq_query.h"
 #include "libbake/core/eigen.h"
@@ -83,9 +84,14 @@ class GlintRangeQuery {
   RmqBounds element_bounds(int64_t t0, int64_t t1) const;
 
  private:
+  // A corner's stored codes in blend space: dequantized, and for `histogram` through G - from a table of G of
+  // every code's value, filled once (the same doubles as looking each up: 16 of the 20 LUT lookups of a node saved).
+  RmqBounds corner_bounds(const RmqCodes& codes) const;
+  RmqBounds blend(const Vec2& f_lo, const Vec2& f_hi, const std::array<RmqBounds, 4>& corner) const;
   const GlintPointQuery* point_;
   const RmqTableView* rmq_;
   uint32_t side_;
+  std::array<std::vector<double>, 2> gaussian_of_code_;  // histogram only: G_T(value(code)) per channel
 };
 
 }  // namespace mbk

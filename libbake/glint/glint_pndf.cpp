@@ -127,15 +127,22 @@ GlintPndf::GlintPndf(const GlintRangeQuery& range, double sigma_r) : range_(&ran
     throw Error(ExitCode::invalid_input, "P-NDF intrinsic roughness must be finite and > 0", "P-NDF");
 }
 
-double GlintPndf::element_term(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Vec2& s) const {
-  const RmqBounds b = shifted(range_->element_bounds(t0, t1), footprint, t0, t0, t1, t1);
-  if (outside(b, s, kGlintNormalCutoffSigmas * sigma_r_)) return 0.0;
+RmqBounds GlintPndf::element_box(int64_t t0, int64_t t1, const GlintFootprint& footprint) const {
+  return shifted(range_->element_bounds(t0, t1), footprint, t0, t0, t1, t1);
+}
+
+double GlintPndf::sub_element_sum(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Vec2& s) const {
   double sum = 0.0;
   for (int a1 = 0; a1 < kK; ++a1)
     for (int a0 = 0; a0 < kK; ++a0)
       sum +=
           element_footprint_integral(sub_element(range_->point(), footprint, t0, t1, a0, a1), footprint, sigma_r_, s);
   return sum;
+}
+
+double GlintPndf::element_term(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Vec2& s) const {
+  if (outside(element_box(t0, t1, footprint), s, kGlintNormalCutoffSigmas * sigma_r_)) return 0.0;
+  return sub_element_sum(t0, t1, footprint, s);
 }
 
 double GlintPndf::evaluate_brute_force(const GlintFootprint& footprint, const Vec2& s) const {
@@ -155,30 +162,39 @@ struct GlintPndf::Query {
   FootprintMasses masses;
 };
 
+// The closed form of an aggregated node (glint_pndf.h, "Aggregation"): the node's mass times the Gaussian around
+// the centre of its box b. The node is the texels [x, x + w) x [y, y + h).
+double GlintPndf::aggregated_term(const RmqBounds& b, int64_t x, int64_t y, int64_t w, int64_t h,
+                                  const Query& q) const {
+  const int64_t mx = (x - q.texels.t0_lo) * kK, my = (y - q.texels.t1_lo) * kK;
+  const FootprintMasses& m = q.masses;
+  const double mass = m.common * (m.prefix_x[size_t(mx + w * kK)] - m.prefix_x[size_t(mx)]) *
+                      (m.prefix_y[size_t(my + h * kK)] - m.prefix_y[size_t(my)]);
+  const Vec2 centre(0.5 * (b.min_x + b.max_x), 0.5 * (b.min_y + b.max_y));
+  const double ir2 = 1.0 / (sigma_r_ * sigma_r_);
+  return mass * ir2 * std::exp(-0.5 * (q.s - centre).squaredNorm() * ir2) / (2.0 * std::numbers::pi);
+}
+
 double GlintPndf::traverse(const TargetNode& node, const Query& q, PndfStatistics& stats) const {
   ++stats.nodes_visited;
   const int64_t h = range_->target_side();
   const int64_t x = node.patch_i * h + node.x0, y = node.patch_j * h + node.y0;
-  if (node.width == 1 && node.height == 1) {
-    const double v = element_term(x, y, q.footprint, q.s);
-    if (v != 0.0) ++stats.elements_evaluated;
-    return v;
-  }
+  const bool leaf = node.width == 1 && node.height == 1;
   uint32_t lookups = 0;
   const RmqBounds b =
-      shifted(range_->node_bounds(node, &lookups), q.footprint, x, x + node.width - 1, y, y + node.height - 1);
+      leaf ? element_box(x, y, q.footprint)
+           : shifted(range_->node_bounds(node, &lookups), q.footprint, x, x + node.width - 1, y, y + node.height - 1);
   stats.rmq_lookups += lookups;
   if (outside(b, q.s, kGlintNormalCutoffSigmas * sigma_r_)) return 0.0;
   const double narrow = kGlintAggregateWidthSigmas * sigma_r_;
   if (q.aggregate && b.max_x - b.min_x <= narrow && b.max_y - b.min_y <= narrow) {
     ++stats.nodes_aggregated;
-    const int64_t mx = (x - q.texels.t0_lo) * kK, my = (y - q.texels.t1_lo) * kK;
-    const FootprintMasses& m = q.masses;
-    const double mass = m.common * (m.prefix_x[size_t(mx + node.width * kK)] - m.prefix_x[size_t(mx)]) *
-                        (m.prefix_y[size_t(my + node.height * kK)] - m.prefix_y[size_t(my)]);
-    const Vec2 centre(0.5 * (b.min_x + b.max_x), 0.5 * (b.min_y + b.max_y));
-    const double ir2 = 1.0 / (sigma_r_ * sigma_r_);
-    return mass * ir2 * std::exp(-0.5 * (q.s - centre).squaredNorm() * ir2) / (2.0 * std::numbers::pi);
+    return aggregated_term(b, x, y, node.width, node.height, q);
+  }
+  if (leaf) {
+    const double v = sub_element_sum(x, y, q.footprint, q.s);
+    if (v != 0.0) ++stats.elements_evaluated;
+    return v;
   }
   const uint32_t w0 = (node.width + 1) / 2, h0 = (node.height + 1) / 2;
   double sum = 0.0;

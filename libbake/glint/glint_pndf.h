@@ -44,19 +44,18 @@
 // footprint's own rectangles halved, so no node reads texels outside the footprint (same result, fewer
 // range queries).
 //
-// Aggregation (deviation [Wang20]: on maps that are mostly flat ground nearly every texel reaches the half
-// vectors that make glints, so pruning alone visits every texel of the footprint): with `aggregate`, a node
-// whose shifted box (above, before widening) is at most kGlintAggregateWidthSigmas (0.01) sigma_r wide in both
-// components, c_b its centre, is summed in closed form as if every element were N(s; c_b, sigma_r^2 I) times its
-// mass (exact for elements with J' = 0 and n' = c_b: position_normal_element.h Eq. 1 reduces to m N(s; n', .));
-// the masses are separable, so a node costs two differences of running sums. Bound: every element of such a
-// node has its normals n'_i + J'_i (u - u_i) within the node's shifted box up to its sub-elements' spatial
-// cut-off (3 sigma_h / K: 0.54% of its mass beyond), i.e. within 0.0071 sigma_r of c_b, so where
-// r = |s - c_b| / sigma_r is at most 4.02, replacing the element by N(s; c_b, .) changes it by a factor within
-// exp(+-(4.02 * 0.0071 + 0.0071^2 / 2)) = 1 +- 2.9%, and beyond that every element's Gaussian is below e^-8 of
-// its peak, so its change is below 1e-5 of the peak; hence |D_agg - D| <= 0.03 D + 0.006 peak,
-// peak = 1 / (2 pi sigma_r^2) (test: GlintPndf.AggregatedTraversalWithinItsBound_1000Queries, with and without
-// slope fields).
+// Aggregation (deviation [Wang20]: on maps that are mostly flat ground nearly every texel reaches the half vectors
+// that make glints, so pruning alone visits every texel of the footprint): with `aggregate`, a node (a single texel
+// too, through its element box) whose shifted box (above, before widening) is at most kGlintAggregateWidthSigmas
+// (0.01) sigma_r wide in both components, c_b its centre, is summed in closed form as if every element were N(s;
+// c_b, sigma_r^2 I) times its mass (exact for elements with J' = 0 and n' = c_b: position_normal_element.h Eq. 1
+// reduces to m N(s; n', .)); the masses are separable, so a node costs two differences of running sums. Bound: every
+// element of such a node has its normals n'_i + J'_i (u - u_i) within the node's shifted box up to its sub-elements'
+// spatial cut-off (3 sigma_h / K: 0.54% of its mass beyond), i.e. within 0.0071 sigma_r of c_b, so where r = |s -
+// c_b| / sigma_r is at most 4.02, replacing the element by N(s; c_b, .) changes it by a factor within exp(+-(4.02 *
+// 0.0071 + 0.0071^2 / 2)) = 1 +- 2.9%, and beyond that every element's Gaussian is below e^-8 of its peak, so its
+// change is below 1e-5 of the peak; hence |D_agg - D| <= 0.03 D + 0.006 peak, peak = 1 / (2 pi sigma_r^2) (test:
+// GlintPndf.AggregatedTraversalWithinItsBound_1000Queries, with and without slope fields).
 // Sampling ([Wang20] Sec. 5.3): a sub-element is picked with probability m / sum m (m is separable in the two
 // axes, so two 1-D inversions), a normal is drawn from k / m (with n', J'), and the draw restarts when that
 // normal lies outside its texel's shifted truncation box: the samples' density is then exactly proportional to
@@ -121,8 +120,12 @@ class GlintPndf {
  private:
   // Element t's sum of k over its sub-elements at s, 0 when s is outside its shifted box (rules above).
   double element_term(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Vec2& s) const;
+  // Element t's shifted box, and its sum of k over its sub-elements at s whatever the box.
+  RmqBounds element_box(int64_t t0, int64_t t1, const GlintFootprint& footprint) const;
+  double sub_element_sum(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Vec2& s) const;
   struct Query;  // what one traversal shares with every node (glint_pndf.cpp)
   double traverse(const TargetNode& node, const Query& q, PndfStatistics& stats) const;
+  double aggregated_term(const RmqBounds& b, int64_t x, int64_t y, int64_t w, int64_t h, const Query& q) const;
   std::optional<Vec2> draw(const GlintFootprint& footprint, const TexelRange& t, const std::vector<double>& wx,
                            const std::vector<double>& wy, const std::function<double()>& uniform) const;
 

@@ -23,7 +23,8 @@
 //   formats/standardization_lut.h (the knots of an asset, as the evaluator reads them).
 // - RMQ min/max tables (`microbake rmq`, asset kind `rmq`, id 3; [Wang20] Sec. 4.4, 5.1, Alg. 1-2):
 //   element_normal_bounds.h (leaf intervals: the reach of a texel's sub-elements), rmq_table.h (the sparse table,
-//   quantized; its deviations), rmq_asset.h (the bake); the layout, the conservative quantizer and the O(1) rectangle
+//   quantized; its deviations), rmq_atom_range.h (the quantization range that stores flat ground exactly),
+//   rmq_asset.h (the bake); the layout, the conservative quantizer and the O(1) rectangle
 //   query the evaluator uses live in formats/ (rmq_layout.h, rmq_quantization.h, rmq_query.h), which is all a renderer
 //   needs to read the asset.
 // - Point query of the infinite microstructure ([Wang20] Sec. 4.2, Eqs. 4-6, appendix A.2): target_patch_grid.h

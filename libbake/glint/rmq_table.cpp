@@ -5,10 +5,13 @@
 #include <bit>
 #include <cstring>
 #include <limits>
+#include <optional>
+#include <unordered_map>
 
 #include "formats/error.h"
 #include "libbake/core/parallel.h"
 #include "libbake/glint/element_normal_bounds.h"
+#include "libbake/glint/rmq_atom_range.h"
 
 namespace mbk {
 namespace {
@@ -33,27 +36,59 @@ struct LeafRow {
   }
 };
 
-// The range: per component the min of the leaf minima and the max of the leaf maxima.
-std::array<RmqRange, 2> leaf_range(const NormalMap& example, Progress& progress) {
+// Counts of the values of one component's degenerate leaves (reach 0: the texel and its 3 x 3 neighbours share
+// the value), the flat ground's candidates; consecutive texels of a plateau hit the last entry.
+struct PlateauCounts {
+  std::unordered_map<double, uint64_t> count;
+  double last = std::numeric_limits<double>::quiet_NaN();
+  uint64_t* last_count = nullptr;
+  void add(double v) {
+    if (v != last || !last_count) last = v, last_count = &count[v];
+    ++*last_count;
+  }
+  void merge(const PlateauCounts& other) {
+    for (const auto& [v, c] : other.count) count[v] += c;
+  }
+  // The most common value (the smaller on ties: the same whatever the map's order), if any.
+  std::optional<double> most_common() const {
+    std::optional<double> best;
+    uint64_t best_count = 0;
+    for (const auto& [v, c] : count)
+      if (c > best_count || (c == best_count && best && v < *best)) best = v, best_count = c;
+    return best;
+  }
+};
+
+// The range: per component the min of the leaf minima and the max of the leaf maxima, widened so that the most
+// common degenerate leaf (the flat ground) is a code (rmq_atom_range.h).
+std::array<RmqRange, 2> leaf_range(const NormalMap& example, uint32_t bits, Progress& progress) {
   std::vector<RowRange> rows(example.height);
+  std::vector<std::array<PlateauCounts, 2>> plateaus(example.height);
   parallel_for(0, example.height, [&](int64_t row) {
     thread_local LeafRow leaf;
     leaf.compute(example, uint32_t(row));
     const Vec3f* n = &example.texels[size_t(row) * example.width];
     RowRange& r = rows[size_t(row)];
+    std::array<PlateauCounts, 2>& plateau = plateaus[size_t(row)];
     for (uint32_t x = 0; x < example.width; ++x) {
       const double nx = n[x].x(), ny = n[x].y();
       r.lo_x = std::min(r.lo_x, nx - leaf.reach_x[x]), r.hi_x = std::max(r.hi_x, nx + leaf.reach_x[x]);
       r.lo_y = std::min(r.lo_y, ny - leaf.reach_y[x]), r.hi_y = std::max(r.hi_y, ny + leaf.reach_y[x]);
+      if (leaf.reach_x[x] == 0.0) plateau[0].add(nx);
+      if (leaf.reach_y[x] == 0.0) plateau[1].add(ny);
     }
     progress.advance();
   });
   RowRange all;
-  for (const RowRange& r : rows) {
+  std::array<PlateauCounts, 2> plateau;
+  for (size_t row = 0; row < rows.size(); ++row) {
+    const RowRange& r = rows[row];
     all.lo_x = std::min(all.lo_x, r.lo_x), all.hi_x = std::max(all.hi_x, r.hi_x);
     all.lo_y = std::min(all.lo_y, r.lo_y), all.hi_y = std::max(all.hi_y, r.hi_y);
+    for (int c = 0; c < 2; ++c) plateau[c].merge(plateaus[row][c]);
   }
-  return {RmqRange{all.lo_x, all.hi_x}, RmqRange{all.lo_y, all.hi_y}};
+  return {rmq_range_with_exact_value(RmqRange{all.lo_x, all.hi_x}, plateau[0].most_common(), bits),
+          rmq_range_with_exact_value(RmqRange{all.lo_y, all.hi_y}, plateau[1].most_common(), bits)};
 }
 
 // Level 0: the quantized leaf intervals, and the leaf statistics.
@@ -160,7 +195,7 @@ RmqLeafLevel build_rmq_leaf_level(const NormalMap& example, uint32_t patch, uint
                                                 " (patch: a power of two in [1, 4096] not above the example's "
                                                 "smaller side; bits: 8 or 16)");
   progress.start("rmq leaves", 2 * uint64_t(example.height));
-  t.range = leaf_range(example, progress);
+  t.range = leaf_range(example, bits, progress);
   t.codes.resize(t.layout.entries_per_level() * 4 * t.layout.code_bytes());  // every entry written below
   t.leaf = bits == 8 ? quantize_leaves<uint8_t>(example, t, progress) : quantize_leaves<uint16_t>(example, t, progress);
   progress.finish();

@@ -7,7 +7,9 @@
 // identical bytes whatever the thread count):
 // 1. The range: per component, [lo, hi] = [min of the leaf minima, max of the leaf maxima], where a texel's
 //    leaf interval is its element's reach (element_normal_bounds.h), in double, a row at a time
-//    (element_normal_reach_row: each texel difference once per row, nothing kept per texel).
+//    (element_normal_reach_row: each texel difference once per row, nothing kept per texel), widened so that
+//    the flat ground - the most common value among leaves of zero reach - is exactly a code
+//    (rmq_atom_range.h: why).
 // 2. Level 0: each row's leaf intervals again, quantized, min down and max up (one quantum at most, in the safe
 //    direction), straight into level 0 (allocated, not zero-filled: every entry is written once).
 // 3. Level k + 1 from level k (Algorithm 1's recursion, bottom-up): entry (k+1, x, row) is the min/max of the

@@ -19,9 +19,29 @@ TargetPatchGrid::TargetPatchGrid(uint32_t example_width, uint32_t example_height
 }
 
 std::array<uint32_t, 2> TargetPatchGrid::patch_origin(int64_t a, int64_t b) const {
+  // The P-NDF asks for the same four vertices many times in a row (a texel's sub-elements and bounds all lie in
+  // one target patch), so each thread keeps the last origin of each vertex parity class (a mod 2, b mod 2): the
+  // four corners of a patch never evict each other.
+  // A memo only: the key is everything the origin is a function of (not the object, whose address a later
+  // grid may reuse).
+  struct Memo {
+    std::array<uint32_t, 4> grid{};  // width, height, patch side, seed
+    int64_t a = 0, b = 0;
+    bool valid = false;
+    std::array<uint32_t, 2> origin{};
+  };
+  thread_local std::array<Memo, 4> memo;
+  const std::array<uint32_t, 4> grid{width_, height_, patch_side_, seed_};
+  Memo& m = memo[size_t((a & 1) | ((b & 1) << 1))];
+  if (m.valid && m.a == a && m.b == b && m.grid == grid) return m.origin;
   const auto ua = uint32_t(uint64_t(a)), ub = uint32_t(uint64_t(b));  // modulo 2^32
-  return {hash4(seed_, ua, ub, 0u) % (width_ - patch_side_ + 1),
-          hash4(seed_, ua, ub, 1u) % (height_ - patch_side_ + 1)};
+  const uint32_t vertex = hash3(seed_, ua, ub);                       // hash4(seed, a, b, axis), shared part
+  m = {grid,
+       a,
+       b,
+       true,
+       {hash_combine(vertex, 0u) % (width_ - patch_side_ + 1), hash_combine(vertex, 1u) % (height_ - patch_side_ + 1)}};
+  return m.origin;
 }
 
 TargetPatchLocation TargetPatchGrid::locate(const Vec2& u) const {

@@ -6,11 +6,13 @@
 // column, so every ratio is measured in the same run on the same work.
 //
 //   bench_glint_pndf [EXAMPLE_SIDE [KIND]]   (default 512 bumps: `microbake gen KIND --size 512 --seed 1`, in memory)
+//   bench_glint_pndf 0 PATH                 (a -Y normal map file, read whole, repaired: the real maps)
 #include <chrono>
 #include <cmath>
 #include <numbers>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <array>
 #include <random>
 #include <string>
@@ -23,6 +25,7 @@
 #include "libbake/glint/glint_technique.h"
 #include "libbake/glint/lut_asset.h"
 #include "libbake/glint/rmq_table.h"
+#include "libbake/image/normal_map.h"
 
 namespace {
 
@@ -72,7 +75,12 @@ Timing time_queries(const std::vector<Query>& queries, double min_seconds, F&& e
 int main(int argc, char** argv) {
   const uint32_t side = argc > 1 ? uint32_t(std::atoi(argv[1])) : 512;
   const std::string kind = argc > 2 ? argv[2] : "bumps";
-  const mbk::NormalMap example = mbk::generate_normal_map(kind, {side, side}, 1, mbk::Progress::silent());
+  // A kind to generate, or the path of a -Y normal map (the real maps beside the repository), read whole.
+  const bool file = std::filesystem::is_regular_file(kind);
+  const mbk::NormalMap example =
+      file ? mbk::load_normal_map(kind, {mbk::YConvention::minus_y, mbk::InvalidTexelPolicy::repair}).map
+           : mbk::generate_normal_map(kind, {side, side}, 1, mbk::Progress::silent());
+  const std::string name = file ? std::filesystem::path(kind).stem().string() : kind;
   const mbk::BakedLut lut = mbk::bake_standardization_lut(example, mbk::kLutDefaultSize, mbk::Progress::silent());
   constexpr uint32_t kPatch = 64;
   const mbk::RmqTable rmq16 = mbk::build_rmq_table(example, kPatch, 16, mbk::Progress::silent());
@@ -130,9 +138,9 @@ int main(int argc, char** argv) {
             "| %s %u^2 | %s | %.0f^2 | %.3f | %.0f | %.1f | %.2f | %.0f | %.0f | %.2f | %.0f | %.2f | %.0f | %.1e | "
             "%.0f | "
             "%.1f | %.2f |\n",
-            kind.c_str(), side, reflected ? "reflected" : "any", width, sigma_r, t16.per_second, brute.per_second,
-            t16.per_second / brute.per_second, texels, t16.mean_nodes, t8.mean_nodes / t16.mean_nodes, t8.per_second,
-            t16.per_second / t8.per_second, t16.mean_elements, worst, aggregated.per_second,
+            name.c_str(), example.width, reflected ? "reflected" : "any", width, sigma_r, t16.per_second,
+            brute.per_second, t16.per_second / brute.per_second, texels, t16.mean_nodes, t8.mean_nodes / t16.mean_nodes,
+            t8.per_second, t16.per_second / t8.per_second, t16.mean_elements, worst, aggregated.per_second,
             aggregated.per_second / brute.per_second, of_bound);
         std::fflush(stdout);
       }
