@@ -25,7 +25,7 @@ GlintPointQuery::GlintPointQuery(const NormalMap& example, uint32_t patch_side, 
       for (int ch = 0; ch < 2; ++ch) t[ch] = lut->channels[ch].standardize(t[ch]).value;
 }
 
-NormalSample GlintPointQuery::evaluate(const Vec2& u) const {
+NormalSample GlintPointQuery::evaluate(const Vec2& u, NormalSample* gaussian) const {
   const TargetPatchLocation loc = grid_.locate(u);
   if (mode_ == GlintBlendMode::none) {
     const int k = (loc.local.x() >= 0.5 ? 1 : 0) + (loc.local.y() >= 0.5 ? 2 : 0);
@@ -63,6 +63,10 @@ NormalSample GlintPointQuery::evaluate(const Vec2& u) const {
       dn = dL / W - (L - m) * dW / w_norm2;
     }
     if (mode_ == GlintBlendMode::histogram) {
+      if (gaussian) {
+        gaussian->n[ch] = n;
+        gaussian->jacobian.row(ch) = dn.transpose();
+      }
       const LutSample inv = lut_->channels[ch].destandardize(n);
       n = inv.value;
       dn *= inv.derivative;

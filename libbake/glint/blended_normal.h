@@ -59,7 +59,9 @@ class GlintPointQuery {
   const ExampleChannels& blended_channels() const { return channels_; }
 
   // n(u) and J(u) = dn/du: rows n_x, n_y; columns d/du_0, d/du_1 (texel units, target_patch_grid.h).
-  NormalSample evaluate(const Vec2& u) const;
+  // `gaussian`, when given and the mode is `histogram`, receives the blend before G^-1: z(u) and dz/du, so
+  // that n = G^-1(z) per channel (the P-NDF measures how G^-1 bends over an element's range of z).
+  NormalSample evaluate(const Vec2& u, NormalSample* gaussian = nullptr) const;
 
  private:
   const NormalMap* example_;

@@ -34,14 +34,62 @@ std::vector<double> axis_weights(int64_t lo, int64_t hi, double c, double sigma_
   return w;
 }
 
-// Sub-element (a0, a1) of texel (t0, t1) as the footprint's slope field sees it (glint_pndf.h):
-// n' = n - K (u - c), J' = J - K.
-PositionNormalElement sub_element(const GlintPointQuery& point, const GlintFootprint& footprint, int64_t t0, int64_t t1,
-                                  int a0, int a1) {
-  const Vec2 u(sub_element_position(t0, a0), sub_element_position(t1, a1));
-  const NormalSample q = point.evaluate(u);
+// The element of normal sample q at u with spatial sigma sigma_h, as the footprint's slope field sees it
+// (glint_pndf.h): n' = n - K (u - c), J' = J - K.
+PositionNormalElement element_at(const NormalSample& q, const Vec2& u, double sigma_h,
+                                 const GlintFootprint& footprint) {
   const Mat2& k = footprint.slope;
-  return {u, q.n - k * (u - footprint.center), q.jacobian - k, kGlintSubElementSigmaTexels};
+  return {u, q.n - k * (u - footprint.center), q.jacobian - k, sigma_h};
+}
+
+// The centre of sub-element (a0, a1) of texel (t0, t1).
+Vec2 sub_element_centre(int64_t t0, int64_t t1, int a0, int a1) {
+  return Vec2(sub_element_position(t0, a0), sub_element_position(t1, a1));
+}
+
+// Whether G^-1 bends within the sub-element's range of z by more than the refinement threshold (glint_technique.h):
+// per channel, with z its blend before G^-1 and dz its gradient, the range z +- delta, delta = (|dz_0| + |dz_1|)
+// times kGlintRefinementReachSigmas sub-element sigmas, and the tangent slope g = dn / dz at z, the largest
+// |G^-1(z +- delta) - (n +- g delta)|. Two inverse lookups per channel; only under histogram blending.
+bool bends_within(const GlintPointQuery& point, const NormalSample& q, const NormalSample& z, double sigma_r) {
+  constexpr double reach = kGlintRefinementReachSigmas * kGlintSubElementSigmaTexels;
+  for (int ch = 0; ch < 2; ++ch) {
+    const Vec2 dz = z.jacobian.row(ch).transpose();
+    const double delta = (std::abs(dz.x()) + std::abs(dz.y())) * reach;
+    if (!(delta > 0.0)) continue;
+    const double g = q.jacobian.row(ch).dot(dz.transpose()) / dz.squaredNorm();  // J = g dz
+    const StandardizationChannelTables& lut = point.lut()->channels[size_t(ch)];
+    const double above = lut.destandardize(z.n[ch] + delta).value - (q.n[ch] + g * delta);
+    const double below = lut.destandardize(z.n[ch] - delta).value - (q.n[ch] - g * delta);
+    if (std::max(std::abs(above), std::abs(below)) > kGlintRefinementSigmas * sigma_r) return true;
+  }
+  return false;
+}
+
+// The R x R children of the sub-element at u (glint_technique.h): centres at u + ((b + 1/2) / R - 1/2) / K per
+// axis, spatial sigma kGlintSubElementSigmaTexels / R, and weights that scale their masses to the sub-element's
+// own, so that refining never changes the P-NDF's normalisation (sum m).
+struct Children {
+  std::array<Vec2, size_t(kGlintRefinementPerAxis* kGlintRefinementPerAxis)> centre;
+  std::array<double, size_t(kGlintRefinementPerAxis* kGlintRefinementPerAxis)> mass;  // each, before scaling
+  double scale = 0.0;                                                                 // parent mass / sum
+};
+constexpr double kChildSigma = kGlintSubElementSigmaTexels / kGlintRefinementPerAxis;
+
+Children children_of(const Vec2& u, const GlintFootprint& footprint, double sigma_r) {
+  constexpr int R = kGlintRefinementPerAxis;
+  Children c;
+  double sum = 0.0;
+  for (int b1 = 0; b1 < R; ++b1)
+    for (int b0 = 0; b0 < R; ++b0) {
+      const size_t i = size_t(b1 * R + b0);
+      c.centre[i] = u + Vec2((b0 + 0.5) / R - 0.5, (b1 + 0.5) / R - 0.5) / kK;
+      c.mass[i] = element_footprint_mass(c.centre[i], kChildSigma, footprint, sigma_r);
+      sum += c.mass[i];
+    }
+  const double parent = element_footprint_mass(u, kGlintSubElementSigmaTexels, footprint, sigma_r);
+  c.scale = sum > 0.0 ? parent / sum : 0.0;  // both underflow together far outside the footprint
+  return c;
 }
 
 // Bounds b shifted by -K (u - c) over the texels [x_lo, x_hi] x [y_lo, y_hi] grown by the element reach
@@ -132,11 +180,26 @@ RmqBounds GlintPndf::element_box(int64_t t0, int64_t t1, const GlintFootprint& f
 }
 
 double GlintPndf::sub_element_sum(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Vec2& s) const {
+  const GlintPointQuery& point = range_->point();
+  const bool histogram = point.mode() == GlintBlendMode::histogram;
   double sum = 0.0;
   for (int a1 = 0; a1 < kK; ++a1)
-    for (int a0 = 0; a0 < kK; ++a0)
-      sum +=
-          element_footprint_integral(sub_element(range_->point(), footprint, t0, t1, a0, a1), footprint, sigma_r_, s);
+    for (int a0 = 0; a0 < kK; ++a0) {
+      const Vec2 u = sub_element_centre(t0, t1, a0, a1);
+      NormalSample z;
+      const NormalSample q = point.evaluate(u, histogram ? &z : nullptr);
+      if (!histogram || !bends_within(point, q, z, sigma_r_)) {
+        sum += element_footprint_integral(element_at(q, u, kGlintSubElementSigmaTexels, footprint), footprint, sigma_r_,
+                                          s);
+        continue;
+      }
+      const Children c = children_of(u, footprint, sigma_r_);
+      double children = 0.0;
+      for (const Vec2& v : c.centre)
+        children += element_footprint_integral(element_at(point.evaluate(v), v, kChildSigma, footprint), footprint,
+                                               sigma_r_, s);
+      sum += c.scale * children;
+    }
   return sum;
 }
 
@@ -262,7 +325,18 @@ std::optional<Vec2> GlintPndf::draw(const GlintFootprint& footprint, const Texel
                                     const std::vector<double>& wy, const std::function<double()>& uniform) const {
   const size_t i0 = pick(wx, uniform()), i1 = pick(wy, uniform());
   const int64_t t0 = t.t0_lo + int64_t(i0 / kK), t1 = t.t1_lo + int64_t(i1 / kK);
-  const PositionNormalElement e = sub_element(range_->point(), footprint, t0, t1, int(i0 % kK), int(i1 % kK));
+  const GlintPointQuery& point = range_->point();
+  const bool histogram = point.mode() == GlintBlendMode::histogram;
+  const Vec2 u = sub_element_centre(t0, t1, int(i0 % kK), int(i1 % kK));
+  NormalSample z;
+  const NormalSample q = point.evaluate(u, histogram ? &z : nullptr);
+  PositionNormalElement e = element_at(q, u, kGlintSubElementSigmaTexels, footprint);
+  if (histogram && bends_within(point, q, z, sigma_r_)) {  // a child, with probability its share of the mass
+    const Children c = children_of(u, footprint, sigma_r_);
+    const std::vector<double> masses(c.mass.begin(), c.mass.end());
+    const Vec2& v = c.centre[pick(masses, uniform())];
+    e = element_at(point.evaluate(v), v, kChildSigma, footprint);
+  }
   const Vec2 s = sample_element_normal(e, footprint, sigma_r_, {uniform(), uniform(), uniform(), uniform()});
   if (outside(shifted(range_->element_bounds(t0, t1), footprint, t0, t0, t1, t1), s,
               kGlintNormalCutoffSigmas * sigma_r_))

@@ -79,41 +79,26 @@ BandMasses band_masses(const GlintPndf& pndf, const GlintPointQuery& point, doub
   return out;
 }
 
-// The largest share of the map's texels that one value of one channel holds (an atom of the standardization).
-double largest_atom_share(const NormalMap& map) {
-  double worst = 0.0;
-  for (int ch = 0; ch < 2; ++ch) {
-    std::vector<float> v;
-    for (const Vec3f& t : map.texels) v.push_back(t[ch]);
-    std::sort(v.begin(), v.end());
-    for (size_t i = 0, j = 0; i < v.size(); i = j) {
-      while (j < v.size() && v[j] == v[i]) ++j;
-      worst = std::max(worst, double(j - i) / double(v.size()));
-    }
-  }
-  return worst;
-}
-
 // Stated tolerance on the ratio, by the exact band mass m (bands under 1% are printed, not asserted: their
 // ratio's standard error passes 1% there): 0.05 where m >= 20%, 0.10 where 5% <= m < 20%, 0.15 where
 // 1% <= m < 5%. The goal is 0.05 everywhere; measured worst cases outside it, all in bands of maps with
 // texel-wide features whose kinks reach inside the sub-elements: brick_floor's outer band [0.4, 2) 1.06 (none,
-// variance; 19.5% of the mass), scratches 1.06 in [0.1, 0.2) (linear) and 1.14 in [0.2, 0.4) (variance).
-// NOT MET, and stated as such: histogram blending of a map that is >= 50% one value (scratches, panel maps)
-// keeps 0.72-0.83 of the exact mass in the bands next to the atom (measured on scratches and
-// scifi_panel_bevels), because G^-1 is flat across the atom's Gaussian range and rises steeply past it, a
-// kink inside the sub-elements that no linearization follows; 0.35 there holds what is reached.
-double tolerance(double mass, bool histogram_of_atom_map) {
-  if (histogram_of_atom_map) return 0.35;
-  return mass >= 0.2 ? 0.05 : mass >= 0.05 ? 0.10 : 0.15;
-}
+// variance; 19.5% of the mass) and 1.12 (linear, 3.3%), scifi_panel_bevels 0.91-0.94 in [0.1, 0.2) (histogram,
+// 1.3-1.4%). Histogram blending of maps that are >= 50% one value kept only 0.72-0.83 of the exact mass in the
+// bands next to the atom before sub-elements that cross a bend of G^-1 were refined (glint_pndf.h); scratches
+// are now within 0.95-1.05 there.
+double tolerance(double mass) { return mass >= 0.2 ? 0.05 : mass >= 0.05 ? 0.10 : 0.15; }
 
-void expect_tail_mass_kept(const NormalMap& map, const std::string& name, std::initializer_list<double> sigmas) {
+// Besides the bands, the mass of [0.05, 0.4) together - the normals between the flat ground and the features,
+// where an atom's bend of G^-1 lies - must be within `near_tolerance` of the exact (when it is >= 1%): 0.05 on
+// the generated maps; 0.15 on the real maps, where scifi_panel_bevels keeps 0.88 under histogram blending (its
+// bevels' transitions still lose mass to the element boxes: 0.97 without truncation).
+void expect_tail_mass_kept(const NormalMap& map, const std::string& name, std::initializer_list<double> sigmas,
+                           double near_tolerance) {
   constexpr uint32_t kPatch = 32;
   const BakedLut lut = bake_standardization_lut(map, kLutDefaultSize, Progress::silent());
   const RmqTable rmq = build_rmq_table(map, kPatch, 16, Progress::silent());
   const RmqTableView view = rmq.view();
-  const bool atom_map = largest_atom_share(map) >= 0.5;
   for (const GlintBlendMode mode :
        {GlintBlendMode::none, GlintBlendMode::linear, GlintBlendMode::variance, GlintBlendMode::histogram}) {
     const GlintPointQuery point(map, kPatch, 5, mode, &lut.tables);
@@ -130,20 +115,23 @@ void expect_tail_mass_kept(const NormalMap& map, const std::string& name, std::i
       EXPECT_GE(m.pndf_total, 0.98);
       for (int b = 0; b < kBands; ++b)
         if (m.exact[b] >= 0.01) {
-          EXPECT_NEAR(m.pndf[b] / m.exact[b], 1.0, tolerance(m.exact[b], atom_map && mode == GlintBlendMode::histogram))
+          EXPECT_NEAR(m.pndf[b] / m.exact[b], 1.0, tolerance(m.exact[b]))
               << "band " << kBandEdges[b] << " to " << kBandEdges[b + 1];
         }
+      double near_exact = 0.0, near_pndf = 0.0;
+      for (int b = 0; b < 3; ++b) near_exact += m.exact[b], near_pndf += m.pndf[b];
+      if (near_exact >= 0.01) EXPECT_NEAR(near_pndf / near_exact, 1.0, near_tolerance) << "[0.05, 0.4) together";
     }
   }
 }
 
 TEST(GlintPndfTailMass, SmoothBumps) {
-  expect_tail_mass_kept(generate_normal_map("bumps", {128, 128}, 3, Progress::silent()), "bumps", {0.005, 0.01});
+  expect_tail_mass_kept(generate_normal_map("bumps", {128, 128}, 3, Progress::silent()), "bumps", {0.005, 0.01}, 0.05);
 }
 
 TEST(GlintPndfTailMass, FlatGroundCutByScratches) {
-  expect_tail_mass_kept(generate_normal_map("scratches", {256, 256}, 1, Progress::silent()), "scratches",
-                        {0.005, 0.01});
+  expect_tail_mass_kept(generate_normal_map("scratches", {256, 256}, 1, Progress::silent()), "scratches", {0.005, 0.01},
+                        0.05);
 }
 
 // The top-left side x side texels (or the whole map when smaller): the real maps are up to 2048^2.
@@ -157,8 +145,9 @@ NormalMap top_left(const NormalMap& map, uint32_t side) {
 }
 
 TEST(GlintPndfTailMass, RealMaps) {
-  const int seen = test::for_each_real_normal_map(
-      [](const NormalMap& map, const std::string& name) { expect_tail_mass_kept(top_left(map, 256), name, {0.01}); });
+  const int seen = test::for_each_real_normal_map([](const NormalMap& map, const std::string& name) {
+    expect_tail_mass_kept(top_left(map, 256), name, {0.01}, 0.15);
+  });
   if (seen == 0) GTEST_SKIP() << "no real normal maps in " << MICROBAKE_REAL_DATA_DIR;
 }
 

@@ -3,8 +3,9 @@
 // is the value of a code through the reader's formula, and the quantum grows by at most (Q / (Q - 1)) (1 + 2^-7);
 // without an atom, with one outside the data, or for a constant channel the data's range is kept. On maps with
 // flat ground (`gen scratches`, maps 90-99% one value) every plateau texel's stored leaf reads back as exactly
-// [x0, x0], and the range query's bounds of a plateau node are that point under the blend modes that keep flat ground flat - the property
-// that lets the P-NDF prune and aggregate flat ground (glint_pndf.h) instead of crossing the atom's steep G.
+// [x0, x0], and the range query's bounds of a plateau node are that point under the blend modes that keep flat ground
+// flat - the property that lets the P-NDF prune and aggregate flat ground (glint_pndf.h) instead of crossing the atom's
+// steep G.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -35,7 +36,8 @@ void expect_exact_atom(const RmqRange& data, double atom, uint32_t bits) {
   if (double(float(atom)) != atom && r.lo == data.lo && r.hi == data.hi) return;
   ASSERT_EQ(q.value(q.up(atom)), atom) << "data [" << data.lo << ", " << data.hi << "] atom " << atom;
   const double q_max = rmq_code_max(bits);
-  ASSERT_LE(r.quantum(bits), data.quantum(bits) * q_max / (q_max - 1) * (1.0 + std::ldexp(1.0, 1 - kRmqAtomQuantumBits)));
+  ASSERT_LE(r.quantum(bits),
+            data.quantum(bits) * q_max / (q_max - 1) * (1.0 + std::ldexp(1.0, 1 - kRmqAtomQuantumBits)));
 }
 
 TEST(RmqAtomRange, AtomIsACodeAndTheRangeHoldsTheData_RandomRanges) {
@@ -67,8 +69,8 @@ TEST(RmqAtomRange, HardCases) {
     expect_exact_atom({-1e-12, 1e-12}, 3e-13, bits);
     // Kept as is: no atom, an atom outside the data, a constant channel, an atom that is not a number.
     for (const RmqRange data : {RmqRange{-1.0, 1.0}, RmqRange{0.25, 0.25}}) {
-      for (const std::optional<double> atom : {std::optional<double>(), std::optional<double>(2.0),
-                                               std::optional<double>(std::nan(""))}) {
+      for (const std::optional<double> atom :
+           {std::optional<double>(), std::optional<double>(2.0), std::optional<double>(std::nan(""))}) {
         const RmqRange r = rmq_range_with_exact_value(data, atom, bits);
         EXPECT_EQ(r.lo, data.lo);
         EXPECT_EQ(r.hi, data.hi);
