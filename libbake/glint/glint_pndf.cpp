@@ -47,10 +47,11 @@ Vec2 sub_element_centre(int64_t t0, int64_t t1, int a0, int a1) {
   return Vec2(sub_element_position(t0, a0), sub_element_position(t1, a1));
 }
 
-// Whether G^-1 bends within the sub-element's range of z by more than the refinement threshold (glint_technique.h):
-// per channel, with z its blend before G^-1 and dz its gradient, the range z +- delta, delta = (|dz_0| + |dz_1|)
-// times kGlintRefinementReachSigmas sub-element sigmas, and the tangent slope g = dn / dz at z, the largest
-// |G^-1(z +- delta) - (n +- g delta)|. Two inverse lookups per channel; only under histogram blending.
+// Whether G^-1 bends within the sub-element's range of z (glint_technique.h): per channel, with z its blend before
+// G^-1 and dz its gradient, the range z +- delta, delta = (|dz_0| + |dz_1|) times kGlintRefinementReachSigmas
+// sub-element sigmas, and the tangent slope g = dn / dz at z, the error e = max |G^-1(z +- delta) - (n +- g delta)|
+// exceeds both kGlintRefinementSigmas sigma_r and kGlintRefinementBend |g| delta. Two inverse lookups per channel;
+// only under histogram blending.
 bool bends_within(const GlintPointQuery& point, const NormalSample& q, const NormalSample& z, double sigma_r) {
   constexpr double reach = kGlintRefinementReachSigmas * kGlintSubElementSigmaTexels;
   for (int ch = 0; ch < 2; ++ch) {
@@ -61,7 +62,8 @@ bool bends_within(const GlintPointQuery& point, const NormalSample& q, const Nor
     const StandardizationChannelTables& lut = point.lut()->channels[size_t(ch)];
     const double above = lut.destandardize(z.n[ch] + delta).value - (q.n[ch] + g * delta);
     const double below = lut.destandardize(z.n[ch] - delta).value - (q.n[ch] - g * delta);
-    if (std::max(std::abs(above), std::abs(below)) > kGlintRefinementSigmas * sigma_r) return true;
+    const double error = std::max(std::abs(above), std::abs(below));
+    if (error > kGlintRefinementSigmas * sigma_r && error > kGlintRefinementBend * std::abs(g) * delta) return true;
   }
   return false;
 }

@@ -34,13 +34,14 @@
 // Refinement under histogram blending (deviation [Wang20], [Yan16]): n = G^-1(z) per channel, and where a map
 // is mostly one value G^-1 is nearly flat across that atom's Gaussian range and steep past it, a bend that a
 // sub-element straddling it cannot follow linearized at its centre (a plateau-side centre puts all its mass at
-// the flat value, a steep-side one spreads it far past the features). A sub-element whose range of z bends G^-1
-// by more than kGlintRefinementSigmas sigma_r off its tangent (glint_technique.h; two inverse lookups per
-// channel) is evaluated as R x R children of spatial sigma / R, each its own point query, weighted so that their
-// masses sum to the sub-element's (the normaliser below does not change); sampling picks a child by mass.
+// the flat value, a steep-side one spreads it far past the features). A sub-element over whose range of z G^-1
+// bends away from its tangent (glint_technique.h: the rule; two inverse lookups per channel) is evaluated as
+// R x R children of spatial sigma / R, each its own point query, weighted so that their masses sum to the
+// sub-element's (the normaliser below does not change); sampling picks a child by mass.
 // Measured (tests/glint/pndf_tail_mass_test.cpp): `gen scratches` kept 0.69-0.75 of the exact mass in
-// [0.05, 0.2) without it, 0.97-1.01 with R = 4 (0.87-0.93 with R = 2); its price is one point query per child
-// where the bends are (P-NDF queries on `gen scratches` 3-4x slower).
+// [0.05, 0.2) without it, 0.96-1.04 with R = 4 (0.87-0.93 with R = 2); its price is one point query per child
+// where the bends are (the query part of P-NDF evaluations on `gen scratches` about 3x slower; `gen bumps`, whose
+// G^-1 has no bend, about 10%).
 // Normalisation: D_P(s) = sum k(s) / sum m over the footprint's sub-elements, i.e. the untruncated D_P would
 // integrate to exactly 1 over s; the normal truncation removes the mass beyond 4 sigma per component (< 1e-4).
 //

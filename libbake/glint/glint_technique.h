@@ -102,11 +102,14 @@ inline constexpr double kGlintElementSigmaTexels = 0.43301270189221935;
 // centred at t + (a + 1/2) / K (a = 0..K-1 per axis), each linearized where it sits (glint_pndf.h).
 inline constexpr int kGlintSubElementsPerAxis = 2;
 // Under histogram blending n = G^-1(z) per channel, and G^-1 bends sharply where an atom's rank range ends: a
-// sub-element whose range of z (its z gradient over kGlintRefinementReachSigmas of its spatial sigma per axis)
-// crosses such a bend by more than kGlintRefinementSigmas sigma_r off its tangent is evaluated as R x R children
-// (R = kGlintRefinementPerAxis) of spatial sigma / R, each linearized where it sits (glint_pndf.h).
+// sub-element is evaluated as R x R children (R = kGlintRefinementPerAxis) of spatial sigma / R, each linearized
+// where it sits (glint_pndf.h), when over its range of z (its z gradient over kGlintRefinementReachSigmas of its
+// spatial sigma per axis) G^-1 leaves its tangent by more than kGlintRefinementSigmas sigma_r AND by more than
+// kGlintRefinementBend of the tangent's own spread: a bend, not the gentle curvature of a smooth map's G^-1
+// (which refining everywhere cost `gen bumps` 3x for no measurable gain in mass).
 inline constexpr int kGlintRefinementPerAxis = 4;
 inline constexpr double kGlintRefinementSigmas = 0.5;
+inline constexpr double kGlintRefinementBend = 0.5;
 inline constexpr double kGlintRefinementReachSigmas = 2.0;
 // The aggregated traversal (glint_pndf.h) sums a node in closed form when its bounds are at most this many
 // sigma wide in both components.
