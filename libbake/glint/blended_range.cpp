@@ -95,8 +95,8 @@ RmqBounds blend_range_bounds(GlintBlendMode mode, const Vec2& f_lo, const Vec2& 
                              const std::array<RmqBounds, 4>& corner, const Vec2& mean, const StandardizationLut* lut) {
   if (mode != GlintBlendMode::histogram) return blend_bounds_in_blend_space(mode, f_lo, f_hi, corner, mean, lut);
   std::array<RmqBounds, 4> standardized;
+  const StandardizationChannelTables* c = lut->channels.data();
   for (int k = 0; k < 4; ++k) {
-    const StandardizationChannelTables* c = lut->channels.data();
     standardized[k] = {c[0].standardize(corner[k].min_x).value, c[0].standardize(corner[k].max_x).value,
                        c[1].standardize(corner[k].min_y).value, c[1].standardize(corner[k].max_y).value};
   }
@@ -115,7 +115,7 @@ GlintRangeQuery::GlintRangeQuery(const GlintPointQuery& point, const RmqTableVie
                     " example, the point query's example is " + std::to_string(point.example().width) + "x" +
                     std::to_string(point.example().height),
                 "range query");
-  if (point.mode() == GlintBlendMode::histogram) {  // G of every code's value, read by corners_of below
+  if (point.mode() == GlintBlendMode::histogram) {  // G of every code's value, read by corner_bounds
     const uint32_t codes = rmq_code_max(rmq.layout().bits) + 1;
     for (int ch = 0; ch < 2; ++ch) {
       const RmqQuantizer q(rmq.range()[size_t(ch)], rmq.layout().bits);

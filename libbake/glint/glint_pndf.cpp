@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
+#include <span>
 #include <vector>
 
 #include "formats/error.h"
@@ -94,6 +96,23 @@ Children children_of(const Vec2& u, const GlintFootprint& footprint, double sigm
   return c;
 }
 
+// The sub-element at u as evaluation and sampling both see it: its element, and its children where G^-1 bends
+// over it (histogram blending only), so that the two can never disagree on the refinement rule.
+struct SubElement {
+  PositionNormalElement element;
+  std::optional<Children> children;
+};
+
+SubElement sub_element_at(const GlintPointQuery& point, const Vec2& u, const GlintFootprint& footprint,
+                          double sigma_r) {
+  const bool histogram = point.mode() == GlintBlendMode::histogram;
+  NormalSample z;
+  const NormalSample q = point.evaluate(u, histogram ? &z : nullptr);
+  SubElement out{element_at(q, u, kGlintSubElementSigmaTexels, footprint), std::nullopt};
+  if (histogram && bends_within(point, q, z, sigma_r)) out.children = children_of(u, footprint, sigma_r);
+  return out;
+}
+
 // Bounds b shifted by -K (u - c) over the texels [x_lo, x_hi] x [y_lo, y_hi] grown by the element reach
 // (glint_pndf.h): per component, the interval of K (u - c) over that box is subtracted.
 RmqBounds shifted(const RmqBounds& b, const GlintFootprint& footprint, int64_t x_lo, int64_t x_hi, int64_t y_lo,
@@ -117,7 +136,7 @@ bool outside(const RmqBounds& b, const Vec2& s, double m) {
 }
 
 // Index i with probability w_i / sum w, from u in [0, 1) (inversion of the running sum).
-size_t pick(const std::vector<double>& w, double u) {
+size_t pick(std::span<const double> w, double u) {
   double total = 0.0;
   for (const double x : w) total += x;
   double target = u * total, run = 0.0;
@@ -183,24 +202,19 @@ RmqBounds GlintPndf::element_box(int64_t t0, int64_t t1, const GlintFootprint& f
 
 double GlintPndf::sub_element_sum(int64_t t0, int64_t t1, const GlintFootprint& footprint, const Vec2& s) const {
   const GlintPointQuery& point = range_->point();
-  const bool histogram = point.mode() == GlintBlendMode::histogram;
   double sum = 0.0;
   for (int a1 = 0; a1 < kK; ++a1)
     for (int a0 = 0; a0 < kK; ++a0) {
-      const Vec2 u = sub_element_centre(t0, t1, a0, a1);
-      NormalSample z;
-      const NormalSample q = point.evaluate(u, histogram ? &z : nullptr);
-      if (!histogram || !bends_within(point, q, z, sigma_r_)) {
-        sum += element_footprint_integral(element_at(q, u, kGlintSubElementSigmaTexels, footprint), footprint, sigma_r_,
-                                          s);
+      const SubElement e = sub_element_at(point, sub_element_centre(t0, t1, a0, a1), footprint, sigma_r_);
+      if (!e.children) {
+        sum += element_footprint_integral(e.element, footprint, sigma_r_, s);
         continue;
       }
-      const Children c = children_of(u, footprint, sigma_r_);
       double children = 0.0;
-      for (const Vec2& v : c.centre)
+      for (const Vec2& v : e.children->centre)
         children += element_footprint_integral(element_at(point.evaluate(v), v, kChildSigma, footprint), footprint,
                                                sigma_r_, s);
-      sum += c.scale * children;
+      sum += e.children->scale * children;
     }
   return sum;
 }
@@ -328,15 +342,11 @@ std::optional<Vec2> GlintPndf::draw(const GlintFootprint& footprint, const Texel
   const size_t i0 = pick(wx, uniform()), i1 = pick(wy, uniform());
   const int64_t t0 = t.t0_lo + int64_t(i0 / kK), t1 = t.t1_lo + int64_t(i1 / kK);
   const GlintPointQuery& point = range_->point();
-  const bool histogram = point.mode() == GlintBlendMode::histogram;
-  const Vec2 u = sub_element_centre(t0, t1, int(i0 % kK), int(i1 % kK));
-  NormalSample z;
-  const NormalSample q = point.evaluate(u, histogram ? &z : nullptr);
-  PositionNormalElement e = element_at(q, u, kGlintSubElementSigmaTexels, footprint);
-  if (histogram && bends_within(point, q, z, sigma_r_)) {  // a child, with probability its share of the mass
-    const Children c = children_of(u, footprint, sigma_r_);
-    const std::vector<double> masses(c.mass.begin(), c.mass.end());
-    const Vec2& v = c.centre[pick(masses, uniform())];
+  const SubElement picked =
+      sub_element_at(point, sub_element_centre(t0, t1, int(i0 % kK), int(i1 % kK)), footprint, sigma_r_);
+  PositionNormalElement e = picked.element;
+  if (picked.children) {  // a child, with probability its share of the mass
+    const Vec2& v = picked.children->centre[pick(picked.children->mass, uniform())];
     e = element_at(point.evaluate(v), v, kChildSigma, footprint);
   }
   const Vec2 s = sample_element_normal(e, footprint, sigma_r_, {uniform(), uniform(), uniform(), uniform()});
