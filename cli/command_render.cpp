@@ -1,4 +1,5 @@
-// `microbake render SCENE -o OUT.{exr,png} [--spp N] [--max-probes N] [--reference N] [--seed S] [--assets DIR]`:
+// `microbake render SCENE -o OUT.{exr,png} [--spp N] [--max-probes N] [--max-parts N] [--reference N] [--seed S]
+// [--assets DIR]`:
 // the reference shader evaluator (libbake/eval/renderer.h). EXR output is linear radiance, PNG is tone-mapped for
 // viewing (libbake/eval/render_output.h). Effects read their baked assets from the asset folder (default
 // <scene folder>/<scene stem>.assets, as `bake` writes it); --reference needs no assets. Prints one line, or with
@@ -13,6 +14,7 @@
 #include "formats/error.h"
 #include "libbake/eval/render_output.h"
 #include "libbake/eval/renderer.h"
+#include "libbake/eval/sample_parts.h"
 #include "libbake/scene/bake_plan.h"
 
 namespace mbk::cli {
@@ -40,6 +42,11 @@ class RenderCommand : public Command {
                                         "Anisotropic filtering: at most this many probes along a footprint's major "
                                         "axis per filtered lookup (render mode; 1 = isotropic)"),
                          options_.max_probes);
+    add_parameter_option(app,
+                         integer_option("--max-parts", 1, kMaxSampleParts, options_.max_parts,
+                                        "Grazing footprints: a sample whose footprint is more than 8 times longer than "
+                                        "wide is shaded in up to this many parts along it (render mode; 1 = whole)"),
+                         options_.max_parts);
     app.add_option("--assets", options_.assets,
                    "Folder of baked assets (default: <scene folder>/<scene stem>.assets, as 'bake' writes)")
         ->type_name("DIR");
@@ -66,6 +73,7 @@ class RenderCommand : public Command {
     settings.reference = options_.reference;
     settings.seed = options_.seed;
     settings.max_probes = options_.max_probes;
+    settings.max_parts = options_.max_parts;
     settings.asset_folder =
         options_.assets.empty() ? default_asset_folder(scene) : std::filesystem::path(options_.assets);
     const RenderInputs inputs = load_render_inputs(scene, settings);
@@ -89,6 +97,7 @@ class RenderCommand : public Command {
           {"samples_per_pixel", samples},
           {"seed", settings.seed},
           {"max_probes", settings.max_probes},
+          {"max_parts", settings.max_parts},
           {"asset_folder", settings.reference > 0 ? nlohmann::json() : nlohmann::json(settings.asset_folder.string())},
           {"seconds", {{"load", load_seconds}, {"render", render_seconds}, {"write", write_seconds}}}};
       std::cout << report.dump(2) << "\n";
@@ -107,6 +116,7 @@ class RenderCommand : public Command {
     uint32_t spp = 1;
     uint32_t reference = 0;
     int max_probes = UvFootprint{}.max_probes;
+    int max_parts = RenderSettings{}.max_parts;
     uint32_t seed = 0;
     std::string assets;
     OutputFormat format = OutputFormat::text;

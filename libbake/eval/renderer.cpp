@@ -8,6 +8,7 @@
 #include "libbake/core/parallel.h"
 #include "libbake/eval/camera_rays.h"
 #include "libbake/eval/pixel_samples.h"
+#include "libbake/eval/sample_parts.h"
 #include "libbake/eval/surface_frame.h"
 #include "libbake/scene/bake_plan.h"
 
@@ -20,16 +21,47 @@ struct ShapeShading {
   const MaterialShader* shader;
 };
 
-Vec3 radiance_along(const Scene& scene, const std::vector<ShapeShading>& shading, const SceneLighting& lighting,
-                    const RayDifferential& r, int max_probes) {
+Vec3 shade_hit(const Scene& scene, const std::vector<ShapeShading>& shading, const SceneLighting& lighting,
+               const RayDifferential& r, const SurfaceHit& hit, const UvFootprint& footprint) {
+  const ShapeShading& s = shading[hit.shape];
+  const Vec3 to_viewer = -r.ray.direction;
+  const ShadingContext context{hit.p, hit.uv, footprint, surface_frame(hit, to_viewer), to_viewer, &lighting};
+  return s.shader->radiance(context, s.brdf);
+}
+
+UvFootprint footprint_of(const Scene& scene, const std::vector<ShapeShading>& shading, const RayDifferential& r,
+                         const SurfaceHit& hit, int max_probes) {
+  UvFootprint footprint =
+      uv_footprint(hit, r, shading[hit.shape].shader->uses_normal_steps() ? &scene.shapes[hit.shape] : nullptr);
+  footprint.max_probes = max_probes;
+  return footprint;
+}
+
+// The radiance of one sample: the ray through film point `film` with its differentials scaled to the sample's
+// `step` (pixels), its footprint shaded whole or in up to max_parts parts (sample_parts.h). Reference rays: step
+// (1, 1), one probe, one part.
+Vec3 sample_radiance(const Scene& scene, const std::vector<ShapeShading>& shading, const SceneLighting& lighting,
+                     const PinholeCamera& camera, const Vec2& film, const Vec2& step, int max_probes, int max_parts) {
+  RayDifferential r = camera.ray(film.x(), film.y());
+  r.ddx *= step.x();
+  r.ddy *= step.y();
   const auto hit = intersect_scene(scene.shapes, r.ray);
   if (!hit) return background(lighting, r.ray.direction);
-  const ShapeShading& s = shading[hit->shape];
-  const Vec3 to_viewer = -r.ray.direction;
-  UvFootprint footprint = uv_footprint(*hit, r, s.shader->uses_normal_steps() ? &scene.shapes[hit->shape] : nullptr);
-  footprint.max_probes = max_probes;
-  const ShadingContext context{hit->p, hit->uv, footprint, surface_frame(*hit, to_viewer), to_viewer, &lighting};
-  return s.shader->radiance(context, s.brdf);
+  const UvFootprint footprint = footprint_of(scene, shading, r, *hit, max_probes);
+  const SampleParts parts = sample_parts(footprint.dp_dx, footprint.dp_dy, max_parts);
+  if (parts.count == 1) return shade_hit(scene, shading, lighting, r, *hit, footprint);
+  Vec3 sum = Vec3::Zero();
+  for (int k = 0; k < parts.count; ++k) {
+    const Vec2 offset = part_offset(parts, k).cwiseProduct(step);
+    RayDifferential part = camera.ray(film.x() + offset.x(), film.y() + offset.y());
+    part.ddx = r.ddx, part.ddy = r.ddy;
+    shrink_to_part(parts, part.ddx, part.ddy);
+    const auto part_hit = intersect_scene(scene.shapes, part.ray);
+    sum += part_hit ? shade_hit(scene, shading, lighting, part, *part_hit,
+                                footprint_of(scene, shading, part, *part_hit, max_probes))
+                    : background(lighting, part.ray.direction);
+  }
+  return sum / parts.count;
 }
 
 }  // namespace
@@ -68,13 +100,12 @@ Image render_scene(const Scene& scene, const RenderInputs& inputs, const RenderS
       for (uint32_t s = 0; s < grid.count(); ++s) {
         if (settings.reference > 0) {
           const Vec2 o = sample_offset(x, y, s, grid, settings.seed);
-          sum += radiance_along(scene, shading, inputs.lighting, camera.ray(x + o.x(), y + o.y()), 1);
+          sum += sample_radiance(scene, shading, inputs.lighting, camera, Vec2(x + o.x(), y + o.y()), Vec2(1.0, 1.0), 1,
+                                 1);
         } else {  // the cell's centre with the cell's footprint (see renderer.h)
           const Vec2 o = cell_centre(s, grid);
-          RayDifferential r = camera.ray(x + o.x(), y + o.y());
-          r.ddx /= grid.cols;
-          r.ddy /= grid.rows;
-          sum += radiance_along(scene, shading, inputs.lighting, r, settings.max_probes);
+          sum += sample_radiance(scene, shading, inputs.lighting, camera, Vec2(x + o.x(), y + o.y()),
+                                 Vec2(1.0 / grid.cols, 1.0 / grid.rows), settings.max_probes, settings.max_parts);
         }
       }
       const Vec3 pixel = sum / double(grid.count());

@@ -12,7 +12,8 @@
 //               (A pixel-sized footprint per sample, as a rasteriser's derivatives are, filters the pixel
 //               convolved with itself: twice as wide; a jittered position moves the box off the pixel.) Each
 //               filtered lookup covers its footprint with up to `max_probes` anisotropic probes
-//               (uv_footprint.h);
+//               (uv_footprint.h), and a footprint much longer than wide is shaded in up to `max_parts` parts
+//               along its length (sample_parts.h);
 //   reference   N x N rays per pixel, every effect's ground truth unfiltered (the baseline: bilinear in the
 //               raw map's level 0): the brute-force image every technique is compared with. No assets are
 //               read.
@@ -37,6 +38,7 @@ struct RenderSettings {
   uint32_t reference = 0;  // > 0: reference mode with reference x reference samples per pixel
   uint32_t seed = 0;       // reference mode's sub-pixel jitter seed (pixel_samples.h); 0 is the default
   int max_probes = UvFootprint{}.max_probes;  // render mode: anisotropic probes per filtered lookup
+  int max_parts = 4;                          // render mode: parts a long footprint is shaded in (sample_parts.h)
   std::filesystem::path asset_folder;         // where effects' assets are; empty: default_asset_folder(scene)
 };
 

@@ -1,0 +1,150 @@
+// Long footprints shaded in parts (libbake/eval/sample_parts.h): the part count and axis against the singular
+// values and right singular vector of the footprint's world-space Jacobian (Eigen's SVD, an independent
+// computation), the cases that leave a sample whole (round, magnified, capped, grazing, degenerate), that the parts
+// tile the sample (offsets and shrunk differentials), and the property a user sees: on a plane receding to the
+// horizon, shading the long footprints in parts brings plain mip and the filtered-NDF effects closer to the
+// brute-force reference.
+#include <gtest/gtest.h>
+
+#include <Eigen/SVD>
+#include <cmath>
+#include <iostream>
+#include <random>
+
+#include "libbake/eval/image_difference.h"
+#include "libbake/eval/renderer.h"
+#include "libbake/eval/sample_parts.h"
+#include "libbake/scene/bake_plan.h"
+#include "tests/scene/scene_test_fixtures.h"
+#include "tests/scratch_dir.h"
+
+namespace mbk {
+namespace {
+
+TEST(SampleParts, CountAndAxisFollowTheFootprintsSvd) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int split = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Vec3 a(u(rng), u(rng), u(rng));
+    const Vec3 b = a * u(rng) * 3.0 + Vec3(u(rng), u(rng), u(rng)) * std::pow(10.0, -3.0 * std::abs(u(rng)));
+    Eigen::Matrix<double, 3, 2> m;
+    m << a, b;
+    const Eigen::JacobiSVD<Eigen::Matrix<double, 3, 2>> svd(m, Eigen::ComputeFullV);
+    const double s1 = svd.singularValues()(0), s2 = svd.singularValues()(1);
+    const int cap = 1 + trial % kMaxSampleParts;
+    const SampleParts p = sample_parts(a, b, cap);
+    const double expected = std::clamp(std::ceil(s1 / (kPartAnisotropy * s2)), 1.0, double(cap));
+    // Ratios within 1e-9 of an integer may round either way.
+    if (std::abs(s1 / (kPartAnisotropy * s2) - std::round(s1 / (kPartAnisotropy * s2))) < 1e-9) continue;
+    ASSERT_EQ(p.count, int(expected)) << "s1 " << s1 << " s2 " << s2 << " cap " << cap;
+    if (p.count > 1) {
+      ++split;
+      EXPECT_NEAR(p.axis.norm(), 1.0, 1e-12);
+      EXPECT_NEAR(std::abs(p.axis.dot(svd.matrixV().col(0))), 1.0, 1e-9);
+    }
+  }
+  EXPECT_GT(split, 500);
+}
+
+TEST(SampleParts, RoundMagnifiedCappedGrazingAndDegenerateFootprintsStayWhole) {
+  const Vec3 x = Vec3::UnitX(), y = Vec3::UnitY();
+  EXPECT_EQ(sample_parts(x, y, 16).count, 1);                // a circle
+  EXPECT_EQ(sample_parts(1e-6 * x, 1e-6 * y, 16).count, 1);  // any size: the ratio decides
+  EXPECT_EQ(sample_parts(x, 7.99 * y, 16).count, 1);         // just under the anisotropy threshold
+  EXPECT_EQ(sample_parts(x, 8.01 * y, 16).count, 2);
+  EXPECT_EQ(sample_parts(x, 1000.0 * y, 16).count, 16);
+  EXPECT_EQ(sample_parts(x, 1000.0 * y, 1000).count, kMaxSampleParts);  // the cap is clamped
+  EXPECT_EQ(sample_parts(x, 1000.0 * y, 1).count, 1);                   // max_parts 1: whole
+  EXPECT_EQ(sample_parts(x, 1000.0 * y, 0).count, 1);
+  EXPECT_EQ(sample_parts(x, Vec3(INFINITY, 0, 0), 16).count, 1);  // a grazing ray
+  EXPECT_EQ(sample_parts(x, Vec3(NAN, 0, 0), 16).count, 1);
+  EXPECT_EQ(sample_parts(Vec3::Zero(), Vec3::Zero(), 16).count, 1);
+  // A line (s2 = 0): as many parts as allowed, along the line's pixel direction.
+  const SampleParts line = sample_parts(x, 2.0 * x, 4);
+  EXPECT_EQ(line.count, 4);
+  EXPECT_NEAR(std::abs(line.axis.dot(Vec2(1.0, 2.0).normalized())), 1.0, 1e-12);
+  EXPECT_EQ(sample_parts(x, 30.0 * y, 16).axis.cwiseAbs(), Vec2(0.0, 1.0));
+}
+
+TEST(SampleParts, PartsTileTheSample) {
+  // Offsets: centred, a part apart along the axis, so that [offset - 1/(2P), offset + 1/(2P)] along the axis tile
+  // [-1/2, 1/2]; differentials: the component along the axis shrinks by 1/P, the one across it is kept.
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 200; ++trial) {
+    const double angle = 3.2 * u(rng);
+    SampleParts p;
+    p.count = 2 + trial % 15;
+    p.axis = Vec2(std::cos(angle), std::sin(angle));
+    Vec2 sum = Vec2::Zero();
+    for (int k = 0; k < p.count; ++k) {
+      const Vec2 o = part_offset(p, k);
+      sum += o;
+      EXPECT_NEAR(o.dot(Vec2(-p.axis.y(), p.axis.x())), 0.0, 1e-15);
+      EXPECT_NEAR(o.dot(p.axis), -0.5 + (k + 0.5) / p.count, 1e-15);
+    }
+    EXPECT_NEAR(sum.norm(), 0.0, 1e-12);
+    const Vec3 ddx(u(rng), u(rng), u(rng)), ddy(u(rng), u(rng), u(rng));
+    Vec3 px = ddx, py = ddy;
+    shrink_to_part(p, px, py);
+    const auto along = [&](const Vec3& dx, const Vec3& dy, const Vec2& e) { return Vec3(e.x() * dx + e.y() * dy); };
+    const Vec2 across(-p.axis.y(), p.axis.x());
+    EXPECT_LT((along(px, py, p.axis) - along(ddx, ddy, p.axis) / p.count).norm(), 1e-14);
+    EXPECT_LT((along(px, py, across) - along(ddx, ddy, across)).norm(), 1e-14);
+  }
+}
+
+// A plane receding to the horizon (footprints from a few texels to thousands along the view) under a glossy lobe,
+// lit by a point light, a directional light from beyond the horizon (its glare) and a sky.
+nlohmann::json receding_scene(const nlohmann::json& effect) {
+  return {
+      {"camera",
+       {{"position", {0.0, 0.4, 0.0}}, {"look_at", {0.0, 0.25, -8.0}}, {"fov_y", 24}, {"width", 64}, {"height", 40}}},
+      {"shapes",
+       {{{"type", "plane"},
+         {"center", {0.0, 0.0, -50.0}},
+         {"size", {100.0, 100.0}},
+         {"uv_scale", {60.0, 60.0}},
+         {"material", "m"}}}},
+      {"materials",
+       {{"m",
+         {{"albedo", {0.15, 0.15, 0.15}},
+          {"specular", {{"distribution", "ggx"}, {"roughness", 0.15}, {"f0", 0.6}}},
+          {"normal_map", {{"path", "map.exr"}}},
+          {"effects", {effect}}}}}},
+      {"lights",
+       {{{"type", "point"}, {"position", {0.5, 1.5, -6.0}}, {"intensity", {2.5, 2.5, 2.5}}},
+        {{"type", "directional"}, {"direction", {0.1, -0.25, 1.0}}, {"irradiance", {0.3, 0.3, 0.3}}},
+        {{"type", "sky"}, {"radiance", {0.04, 0.05, 0.07}}}}}};
+}
+
+TEST(SampleParts, LongFootprintsInPartsAreCloserToTheReference) {
+  test::ScratchDir dir("sample_parts_receding");
+  testing::write_bumpy_map(dir / "map.exr", 64, 64);
+  const auto render = [&](const nlohmann::json& effect, uint32_t reference, int max_parts) {
+    testing::write_json(dir / "s.json", receding_scene(effect));
+    const Scene scene = load_scene(dir / "s.json");
+    std::filesystem::create_directories(default_asset_folder(scene));
+    if (reference == 0)
+      for (const PlannedAsset& a : plan_assets(scene))
+        a.recipe.bake(Progress::silent()).write(default_asset_folder(scene) / a.file_name);
+    RenderSettings settings;
+    settings.reference = reference;
+    settings.spp = reference > 0 ? 1 : 4;
+    settings.max_parts = max_parts;
+    return render_scene(scene, load_render_inputs(scene, settings), settings, Progress::silent());
+  };
+  const Image reference = render("mip", 16, 1);
+  for (const nlohmann::json& effect :
+       {nlohmann::json("mip"), nlohmann::json("toksvig"), nlohmann::json{{"name", "vmf"}, {"lobes", 2}}}) {
+    const double whole = compare_images(render(effect, 0, 1), reference).rmse;
+    const double parts = compare_images(render(effect, 0, 4), reference).rmse;
+    std::cout << effect.dump() << ": rmse vs reference, footprints whole " << whole << ", in up to 4 parts " << parts
+              << "\n";
+    EXPECT_LT(parts, 0.8 * whole) << effect.dump();
+  }
+}
+
+}  // namespace
+}  // namespace mbk
