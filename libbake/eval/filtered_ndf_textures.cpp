@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "formats/error.h"
+#include "libbake/eval/vmf_lobe_merge.h"
 #include "libbake/image/texture_taps.h"
 
 namespace mbk {
@@ -109,32 +110,39 @@ std::vector<VmfLobeShape> VmfTexture::lookup(const FootprintProbes& probes, std:
     finest = finest || (finite(p.uv, p.lod) && level_blend(levels(), p.lod).fine == 0);
   }
   const size_t slots = J + (finest ? 1 : 0);
-  std::vector<VmfLobeShape> lobes(slots);
-  if (features) features->assign(slots * F, 0.0);
-  if (!all_finite) return lobes;
-  // T(alpha), T(alpha r), T(alpha y) per slot ([Han07] Sec. 7.6.4.2), averaged over the probes (the slot-wise
-  // box filter the pyramid's own levels apply); below LOD 1, slot J gathers level 0.
-  std::vector<double> premultiplied(slots * 4, 0.0), weighted_features(slots * F, 0.0), level0(4);
+  if (!all_finite) {
+    if (features) features->assign(slots * F, 0.0);
+    return std::vector<VmfLobeShape>(slots);
+  }
+  // The texels of levels >= 1 the probes read, with their summed trilinear weights (probes of one footprint share
+  // most of their coarse texels); below LOD 1, level 0's part of each probe goes to slot J.
+  struct TexelWeight {
+    size_t level, texel;
+    double weight;
+  };
+  std::vector<TexelWeight> texels;
+  std::vector<double> level0_slot(4 + F, 0.0), level0(4), level0_features(F);
   for (const FootprintProbe& p : probes) {
     const LevelBlend b = level_blend(levels(), p.lod);
     std::fill(level0.begin(), level0.end(), 0.0);
+    std::fill(level0_features.begin(), level0_features.end(), 0.0);
     for (const auto& [level, blend] : {std::pair{b.fine, 1.0 - b.t}, std::pair{b.coarse, b.t}}) {
       if (blend == 0.0) continue;
       const double weight = blend / probes.size();
       const uint32_t w = widths_[level];
       for (const TextureTap& tap : bilinear_taps(w, heights_[level], p.uv)) {
         const size_t texel = size_t(tap.row) * w + tap.x;
-        for (size_t q = 0; q < J * 4; ++q) {
-          const double value = weight * tap.weight * levels_[level][texel * J * 4 + q];
-          if (level == 0)
-            level0[q % 4] += value;  // every slot of level 0 into slot J, below
-          else
-            premultiplied[q] += value;
+        if (level == 0) {
+          for (size_t q = 0; q < J * 4; ++q) level0[q % 4] += weight * tap.weight * levels_[0][texel * J * 4 + q];
+          for (size_t q = 0; q < J * F; ++q)
+            level0_features[q % F] += weight * tap.weight * feature_levels_[0][texel * J * F + q];
+          continue;
         }
-        for (size_t q = 0; q < J * F; ++q) {
-          const size_t to = level == 0 ? J * F + q % F : q;
-          weighted_features[to] += weight * tap.weight * feature_levels_[level][texel * J * F + q];
-        }
+        const auto same = [&](const TexelWeight& t) { return t.level == level && t.texel == texel; };
+        if (const auto it = std::find_if(texels.begin(), texels.end(), same); it != texels.end())
+          it->weight += weight * tap.weight;
+        else
+          texels.push_back({level, texel, weight * tap.weight});
       }
     }
     // Level 0 holds one lobe (1, n) per texel, in whichever slot the coherence pass chose. Blending the taps
@@ -147,14 +155,35 @@ std::vector<VmfLobeShape> VmfTexture::lookup(const FootprintProbes& probes, std:
     const double len = std::sqrt(level0[1] * level0[1] + level0[2] * level0[2] + level0[3] * level0[3]);
     if (len > 1e-6 * level0[0])
       for (int a = 1; a <= 3; ++a) level0[size_t(a)] *= level0[0] / len;
-    if (finest)
-      for (size_t a = 0; a < 4; ++a) premultiplied[4 * J + a] += level0[a];
+    for (size_t a = 0; a < 4; ++a) level0_slot[a] += level0[a];
+    for (size_t f = 0; f < F; ++f) level0_slot[4 + f] += level0_features[f];
   }
-  for (size_t j = 0; j < slots; ++j) {
-    const double* q = &premultiplied[4 * j];
-    lobes[j] = vmf_lobe_from_premultiplied(q[0], Vec3(q[1], q[2], q[3]), kappa_max_);  // Alg. 7.2 lines 7-10
-    if (features && lobes[j].alpha > 0.0)
-      for (size_t f = 0; f < F; ++f) (*features)[j * F + f] = weighted_features[j * F + f] / lobes[j].alpha;
+  // Levels >= 1: every texel's lobes, merged by direction (vmf_lobe_merge.h; deviation [Han07]: Alg. 7.2 blends
+  // slot by slot).
+  std::vector<double> scaled_features(texels.size() * J * F);
+  std::vector<WeightedVmfLobe> candidates;
+  for (size_t t = 0; t < texels.size(); ++t) {
+    const TexelWeight& tw = texels[t];
+    const float* lobe = &levels_[tw.level][tw.texel * J * 4];
+    for (size_t j = 0; j < J; ++j, lobe += 4) {
+      if (!(lobe[0] > 0.0f)) continue;
+      double* y = &scaled_features[(t * J + j) * F];
+      for (size_t f = 0; f < F; ++f) y[f] = tw.weight * feature_levels_[tw.level][(tw.texel * J + j) * F + f];
+      candidates.push_back({tw.weight * lobe[0], tw.weight * Vec3(lobe[1], lobe[2], lobe[3]), std::span(y, F), t});
+    }
+  }
+  std::vector<double> alpha_y;
+  std::vector<VmfLobeShape> lobes = merge_vmf_lobes(candidates, J, kappa_max_, F, features ? &alpha_y : nullptr);
+  if (finest) {
+    lobes.push_back(
+        vmf_lobe_from_premultiplied(level0_slot[0], Vec3(level0_slot[1], level0_slot[2], level0_slot[3]), kappa_max_));
+    alpha_y.insert(alpha_y.end(), level0_slot.begin() + 4, level0_slot.end());
+  }
+  if (features) {
+    features->assign(slots * F, 0.0);
+    for (size_t j = 0; j < slots; ++j)
+      if (lobes[j].alpha > 0.0)
+        for (size_t f = 0; f < F; ++f) (*features)[j * F + f] = alpha_y[j * F + f] / lobes[j].alpha;
   }
   return lobes;
 }

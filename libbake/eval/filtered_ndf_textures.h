@@ -6,8 +6,10 @@
 // (stored as normals) contributes Y_lm of the renormalised bilinear normal of its four taps, one delta, as plain
 // normal mapping and `render --reference` shade it (the four taps as separate deltas would add a spread that
 // interpolation does not have: on a magnified bumpy map that tripled the error against the reference).
-// vMF ([Han07] Sec. 7.6.4.2, Alg. 7.2): per lobe slot, the trilinear blend of (alpha, alpha r) (and alpha y),
-// then r = T(alpha r) / T(alpha), kappa = A^-1(|r|) (capped at the asset's kappa_max) and mu = r / |r|; for the
+// vMF ([Han07] Sec. 7.6.4.2, Alg. 7.2): the trilinear blend of (alpha, alpha r) (and alpha y) of the lobes of
+// every texel the lookup reads - merged by direction, not slot by slot as Alg. 7.2 does (vmf_lobe_merge.h: a slot
+// does not hold the same lobe in every texel, and an atom averaged with another lobe shades as a wide lobe) - then
+// r = T(alpha r) / T(alpha), kappa = A^-1(|r|) (capped at the asset's kappa_max) and mu = r / |r|; for the
 // same reason level 0 (one lobe per texel, in varying slots) is gathered into one extra lobe below LOD 1: weight
 // 1 - t, kappa_max, at the renormalised interpolated normal. Deviation [Han07]: Alg. 7.2 blends level 0 per slot
 // like any other level.

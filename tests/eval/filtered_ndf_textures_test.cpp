@@ -55,7 +55,7 @@ TEST(ShNdfTexture, TexelCentresAndLevelBlends) {
   EXPECT_TRUE(std::isnan(g[0]));
 }
 
-TEST(VmfTexture, InterpolatesPremultipliedLobesPerSlot) {
+TEST(VmfTexture, InterpolatesPremultipliedLobes) {
   // Two columns of different constant normals: level 0 holds (1, n) in slot 0 for both.
   NormalMap map;
   map.width = 2, map.height = 1;
