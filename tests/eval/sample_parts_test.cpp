@@ -14,8 +14,7 @@
 #include "libbake/eval/image_difference.h"
 #include "libbake/eval/renderer.h"
 #include "libbake/eval/sample_parts.h"
-#include "libbake/scene/bake_plan.h"
-#include "tests/scene/scene_test_fixtures.h"
+#include "tests/eval/receding_plane_fixture.h"
 #include "tests/scratch_dir.h"
 
 namespace mbk {
@@ -95,45 +94,11 @@ TEST(SampleParts, PartsTileTheSample) {
   }
 }
 
-// A plane receding to the horizon (footprints from a few texels to thousands along the view) under a glossy lobe,
-// lit by a point light, a directional light from beyond the horizon (its glare) and a sky.
-nlohmann::json receding_scene(const nlohmann::json& effect) {
-  return {
-      {"camera",
-       {{"position", {0.0, 0.4, 0.0}}, {"look_at", {0.0, 0.25, -8.0}}, {"fov_y", 24}, {"width", 64}, {"height", 40}}},
-      {"shapes",
-       {{{"type", "plane"},
-         {"center", {0.0, 0.0, -50.0}},
-         {"size", {100.0, 100.0}},
-         {"uv_scale", {60.0, 60.0}},
-         {"material", "m"}}}},
-      {"materials",
-       {{"m",
-         {{"albedo", {0.15, 0.15, 0.15}},
-          {"specular", {{"distribution", "ggx"}, {"roughness", 0.15}, {"f0", 0.6}}},
-          {"normal_map", {{"path", "map.exr"}}},
-          {"effects", {effect}}}}}},
-      {"lights",
-       {{{"type", "point"}, {"position", {0.5, 1.5, -6.0}}, {"intensity", {2.5, 2.5, 2.5}}},
-        {{"type", "directional"}, {"direction", {0.1, -0.25, 1.0}}, {"irradiance", {0.3, 0.3, 0.3}}},
-        {{"type", "sky"}, {"radiance", {0.04, 0.05, 0.07}}}}}};
-}
-
 TEST(SampleParts, LongFootprintsInPartsAreCloserToTheReference) {
   test::ScratchDir dir("sample_parts_receding");
   testing::write_bumpy_map(dir / "map.exr", 64, 64);
   const auto render = [&](const nlohmann::json& effect, uint32_t reference, int max_parts) {
-    testing::write_json(dir / "s.json", receding_scene(effect));
-    const Scene scene = load_scene(dir / "s.json");
-    std::filesystem::create_directories(default_asset_folder(scene));
-    if (reference == 0)
-      for (const PlannedAsset& a : plan_assets(scene))
-        a.recipe.bake(Progress::silent()).write(default_asset_folder(scene) / a.file_name);
-    RenderSettings settings;
-    settings.reference = reference;
-    settings.spp = reference > 0 ? 1 : 4;
-    settings.max_parts = max_parts;
-    return render_scene(scene, load_render_inputs(scene, settings), settings, Progress::silent());
+    return test::render_in(dir.path(), test::receding_plane_scene(effect, 60.0), reference, max_parts);
   };
   const Image reference = render("mip", 16, 1);
   for (const nlohmann::json& effect :

@@ -12,10 +12,8 @@
 #include <vector>
 
 #include "libbake/eval/image_difference.h"
-#include "libbake/eval/renderer.h"
 #include "libbake/eval/vmf_lobe_merge.h"
-#include "libbake/scene/bake_plan.h"
-#include "tests/scene/scene_test_fixtures.h"
+#include "tests/eval/receding_plane_fixture.h"
 #include "tests/scratch_dir.h"
 
 namespace mbk {
@@ -160,8 +158,7 @@ TEST(VmfLobeMerge, EmptyAndDegenerateInputs) {
 }
 
 // Panels: flat ground (one exact normal: an atom) cut by bevels two texels wide that face the four directions (four
-// more atoms), as a sci-fi panel map is. A plane of it receding to the horizon under a light from beyond the
-// horizon (its glare) and a point light; vmf4 against the reference and plain mip.
+// more atoms), as a sci-fi panel map is.
 void write_panel_map(const std::filesystem::path& path) {
   testing::write_normal_map(path, 64, 64, [](uint32_t x, uint32_t row) {
     const uint32_t px = x % 16, py = row % 16;
@@ -171,28 +168,6 @@ void write_panel_map(const std::filesystem::path& path) {
     if (py >= 14) return Vec3(0.0, 1.0, 1.0);
     return Vec3(0.0, 0.0, 1.0);
   });
-}
-
-nlohmann::json panel_scene(const nlohmann::json& effect) {
-  return {
-      {"camera",
-       {{"position", {0.0, 0.4, 0.0}}, {"look_at", {0.0, 0.25, -8.0}}, {"fov_y", 24}, {"width", 64}, {"height", 40}}},
-      {"shapes",
-       {{{"type", "plane"},
-         {"center", {0.0, 0.0, -50.0}},
-         {"size", {100.0, 100.0}},
-         {"uv_scale", {400.0, 400.0}},
-         {"material", "m"}}}},
-      {"materials",
-       {{"m",
-         {{"albedo", {0.15, 0.15, 0.15}},
-          {"specular", {{"distribution", "ggx"}, {"roughness", 0.15}, {"f0", 0.6}}},
-          {"normal_map", {{"path", "map.exr"}}},
-          {"effects", {effect}}}}}},
-      {"lights",
-       {{{"type", "point"}, {"position", {0.5, 1.5, -6.0}}, {"intensity", {2.5, 2.5, 2.5}}},
-        {{"type", "directional"}, {"direction", {0.1, -0.25, 1.0}}, {"irradiance", {0.3, 0.3, 0.3}}},
-        {{"type", "sky"}, {"radiance", {0.04, 0.05, 0.07}}}}}};
 }
 
 TEST(VmfLobeMerge, PanelMapWithAtomsIsCloserToTheReferenceThanPlainMipAtTheHorizon) {
@@ -207,16 +182,7 @@ TEST(VmfLobeMerge, PanelMapWithAtomsIsCloserToTheReferenceThanPlainMipAtTheHoriz
   test::ScratchDir dir("vmf_merge_panels");
   write_panel_map(dir / "map.exr");
   const auto render = [&](const nlohmann::json& effect, uint32_t reference) {
-    testing::write_json(dir / "s.json", panel_scene(effect));
-    const Scene scene = load_scene(dir / "s.json");
-    std::filesystem::create_directories(default_asset_folder(scene));
-    if (reference == 0)
-      for (const PlannedAsset& a : plan_assets(scene))
-        a.recipe.bake(Progress::silent()).write(default_asset_folder(scene) / a.file_name);
-    RenderSettings settings;
-    settings.reference = reference;
-    settings.spp = reference > 0 ? 1 : 4;
-    return render_scene(scene, load_render_inputs(scene, settings), settings, Progress::silent());
+    return test::render_in(dir.path(), test::receding_plane_scene(effect, 400.0), reference);
   };
   const Image reference = render("mip", 16);
   // The sky's rows are all one colour; the first row that is not is the horizon's (part sky in the reference).
