@@ -21,8 +21,8 @@ struct ShapeShading {
   const MaterialShader* shader;
 };
 
-Vec3 shade_hit(const Scene& scene, const std::vector<ShapeShading>& shading, const SceneLighting& lighting,
-               const RayDifferential& r, const SurfaceHit& hit, const UvFootprint& footprint) {
+Vec3 shade_hit(const std::vector<ShapeShading>& shading, const SceneLighting& lighting, const RayDifferential& r,
+               const SurfaceHit& hit, const UvFootprint& footprint) {
   const ShapeShading& s = shading[hit.shape];
   const Vec3 to_viewer = -r.ray.direction;
   const ShadingContext context{hit.p, hit.uv, footprint, surface_frame(hit, to_viewer), to_viewer, &lighting};
@@ -49,7 +49,7 @@ Vec3 sample_radiance(const Scene& scene, const std::vector<ShapeShading>& shadin
   if (!hit) return background(lighting, r.ray.direction);
   const UvFootprint footprint = footprint_of(scene, shading, r, *hit, max_probes);
   const SampleParts parts = sample_parts(footprint.dp_dx, footprint.dp_dy, max_parts);
-  if (parts.count == 1) return shade_hit(scene, shading, lighting, r, *hit, footprint);
+  if (parts.count == 1) return shade_hit(shading, lighting, r, *hit, footprint);
   Vec3 sum = Vec3::Zero();
   for (int k = 0; k < parts.count; ++k) {
     const Vec2 offset = part_offset(parts, k).cwiseProduct(step);
@@ -57,7 +57,7 @@ Vec3 sample_radiance(const Scene& scene, const std::vector<ShapeShading>& shadin
     part.ddx = r.ddx, part.ddy = r.ddy;
     shrink_to_part(parts, part.ddx, part.ddy);
     const auto part_hit = intersect_scene(scene.shapes, part.ray);
-    sum += part_hit ? shade_hit(scene, shading, lighting, part, *part_hit,
+    sum += part_hit ? shade_hit(shading, lighting, part, *part_hit,
                                 footprint_of(scene, shading, part, *part_hit, max_probes))
                     : background(lighting, part.ray.direction);
   }
