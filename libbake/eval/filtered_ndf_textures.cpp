@@ -42,7 +42,8 @@ ShNdfTexture ShNdfTexture::from_asset(const Asset& asset) {
   return t;
 }
 
-void ShNdfTexture::add_level(size_t level, const Vec2& uv, double weight, std::span<double> g) const {
+void ShNdfTexture::add_level(size_t level, const Vec2& uv, double weight, std::span<double> g,
+                             FinestDelta* finest) const {
   const size_t count = size_t(basis_.count());
   if (level == 0) {
     // One delta at the renormalised bilinear normal, as plain normal mapping and the reference shade (see the
@@ -53,9 +54,11 @@ void ShNdfTexture::add_level(size_t level, const Vec2& uv, double weight, std::s
       n += tap.weight * Vec3(t[0], t[1], t[2]);
     }
     const double len = n.norm();
+    const Vec3 normal = len > 1e-6 ? Vec3(n / len) : Vec3::UnitZ();  // opposite taps: the mean lost its direction
     std::vector<double> y(count);
-    basis_.evaluate(len > 1e-6 ? Vec3(n / len) : Vec3::UnitZ(), y);  // opposite taps: the mean lost its direction
+    basis_.evaluate(normal, y);
     for (size_t k = 0; k < count; ++k) g[k] += weight * y[k];
+    if (finest) *finest = {weight, normal};
     return;
   }
   const uint32_t w = widths_[level - 1], h = heights_[level - 1];
@@ -65,7 +68,7 @@ void ShNdfTexture::add_level(size_t level, const Vec2& uv, double weight, std::s
   }
 }
 
-void ShNdfTexture::lookup(const Vec2& uv, double lod, std::span<double> g) const {
+void ShNdfTexture::lookup(const Vec2& uv, double lod, std::span<double> g, FinestDelta* finest) const {
   const size_t count = size_t(basis_.count());
   if (g.size() < count) throw Error(ExitCode::runtime_failure, "internal: SH lookup span shorter than the basis");
   if (!finite(uv, lod)) {
@@ -73,9 +76,10 @@ void ShNdfTexture::lookup(const Vec2& uv, double lod, std::span<double> g) const
     return;
   }
   std::fill(g.begin(), g.begin() + long(count), 0.0);
+  if (finest) *finest = {};
   const LevelBlend b = level_blend(levels(), lod);
-  add_level(b.fine, uv, 1.0 - b.t, g);
-  if (b.t > 0.0) add_level(b.coarse, uv, b.t, g);
+  add_level(b.fine, uv, 1.0 - b.t, g, finest);
+  if (b.t > 0.0) add_level(b.coarse, uv, b.t, g, finest);
 }
 
 VmfTexture VmfTexture::from_asset(const Asset& asset) {

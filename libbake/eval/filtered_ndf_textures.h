@@ -34,12 +34,19 @@ class ShNdfTexture {
   uint32_t height() const { return height_; }
   const std::vector<double>& window() const { return window_; }
   size_t levels() const { return 1 + levels_.size(); }
-  // g_lm at (uv, lod) into g (size >= (order + 1)^2). NaN uv or lod give NaN coefficients.
-  void lookup(const Vec2& uv, double lod, std::span<double> g) const;
+  // The part of a lookup that is the finest level: one normal (a delta) of weight 1 - t (t the trilinear weight of
+  // the next level); weight 0 where the lookup reads coarser levels only.
+  struct FinestDelta {
+    double weight = 0.0;
+    Vec3 normal = Vec3::UnitZ();
+  };
+  // g_lm at (uv, lod) into g (size >= (order + 1)^2), and the finest level's delta among them into `finest` if
+  // given. NaN uv or lod give NaN coefficients.
+  void lookup(const Vec2& uv, double lod, std::span<double> g, FinestDelta* finest = nullptr) const;
 
  private:
   explicit ShNdfTexture(int order) : basis_(order) {}
-  void add_level(size_t level, const Vec2& uv, double weight, std::span<double> g) const;
+  void add_level(size_t level, const Vec2& uv, double weight, std::span<double> g, FinestDelta* finest) const;
   ShBasisEvaluator basis_;
   uint32_t width_ = 0, height_ = 0;
   std::vector<float> normals_;

@@ -45,6 +45,21 @@ SphereRule degree4_rule() {
   return rule;
 }
 
+// The mean normal of an NDF from its first band, g_1m = sqrt(3 / (4 pi)) E[(y, z, x)]: unit direction (+z where
+// the mean vanishes) and length |E[n]| in [0, 1].
+struct MeanNormal {
+  Vec3 direction = Vec3::UnitZ();
+  double length = 0.0;
+};
+
+MeanNormal mean_normal(std::span<const double> g) {
+  if (g.size() < 4) return {};
+  const double c1 = std::sqrt(3.0 / (4.0 * kPi));
+  const Vec3 mean = Vec3(g[size_t(sh_index(1, 1))], g[size_t(sh_index(1, -1))], g[size_t(sh_index(1, 0))]) / c1;
+  const double len = mean.norm();
+  return len > 1e-6 ? MeanNormal{mean / len, std::min(1.0, len)} : MeanNormal{};
+}
+
 class ShNdfShader : public MaterialShader {
  public:
   ShNdfShader(std::shared_ptr<const ShNdfTexture> texture, const Material& material)
@@ -58,60 +73,50 @@ class ShNdfShader : public MaterialShader {
         rule_(degree4_rule()) {}
 
   Vec3 radiance(const ShadingContext& c, const Brdf& brdf) const override {
-    const int order = texture_->order();
-    // The footprint's NDF: SH coefficients are linear in it, so the mean of its probes' coefficients.
+    // The footprint's NDF: SH coefficients are linear in it, so the mean of its probes' coefficients. The probes'
+    // finest-level parts are single normals (deltas), also kept apart: the specular shades them exactly.
     std::vector<double> g(size_t(basis_.count()), 0.0), probe_g(g.size());
+    std::vector<SpecularLobe> deltas;  // world-space normals, kappa = inf
+    const SurfaceFrame& f = c.frame;
     const FootprintProbes probes = footprint_probes(c.uv, c.footprint, texture_->width(), texture_->height());
     for (const FootprintProbe& p : probes) {
-      texture_->lookup(p.uv, p.lod, probe_g);
+      ShNdfTexture::FinestDelta delta;
+      texture_->lookup(p.uv, p.lod, probe_g, &delta);
       for (size_t k = 0; k < g.size(); ++k) g[k] += probe_g[k] / probes.size();
+      if (delta.weight > 0.0)
+        deltas.push_back(
+            {delta.weight / probes.size(), f.to_world(delta.normal).normalized(), INFINITY, brdf.lobe.alpha});
     }
-    const SurfaceFrame& f = c.frame;
     const auto to_tangent = [&](const Vec3& w) { return Vec3(w.dot(f.T), w.dot(f.B), w.dot(f.N)); };
     const std::span<const double> window(texture_->window());
 
-    // The mean normal from the first band: g_1m = sqrt(3 / (4 pi)) E[(y, z, x)].
-    const double c1 = std::sqrt(3.0 / (4.0 * kPi));
-    const Vec3 mean =
-        order >= 1 ? Vec3(Vec3(g[size_t(sh_index(1, 1))], g[size_t(sh_index(1, -1))], g[size_t(sh_index(1, 0))]) / c1)
-                   : Vec3(Vec3::Zero());
-    const double len = mean.norm();
-    const Vec3 n = facing_viewer(f.to_world(len > 1e-6 ? Vec3(mean / len) : Vec3::UnitZ()).normalized(), c.to_viewer);
+    // The footprint's mean normal and the spread of its NDF as one lobe (Toksvig's variance of |mean|): the
+    // distant specular uses them.
+    const MeanNormal mean = mean_normal(g);
+    const Vec3 n = facing_viewer(f.to_world(mean.direction).normalized(), c.to_viewer);
+    const double spread_alpha =
+        clamp_filtered_alpha(brdf.lobe.alpha, toksvig_beckmann_alpha(brdf.lobe.alpha, mean.length));
 
-    // The spread of the NDF as one lobe (Toksvig's variance of |mean|): the masking-shadowing of the filtered
-    // lobe and the distant specular use it (D itself comes from the full SH expansion).
-    Brdf spread = brdf;
-    spread.lobe.alpha =
-        clamp_filtered_alpha(brdf.lobe.alpha, toksvig_beckmann_alpha(brdf.lobe.alpha, std::min(1.0, len)));
+    // The specular of the NDF without its deltas, g_rest = g - sum_d w_d Y(n_d) of weight 1 - sum_d w_d: each
+    // delta is one normal and shades as the reference shades it (lobe_specular.h's product at that normal, the
+    // material's own alpha), so a long footprint that reads a few finest-level normals keeps their highlight
+    // instead of spreading it through one widened lobe whose masking (at a grazing view) darkens it.
+    std::vector<double> rest = g, y(g.size());
+    double rest_weight = 1.0;
+    for (const SpecularLobe& d : deltas) {
+      basis_.evaluate(to_tangent(d.mu), y);
+      for (size_t k = 0; k < rest.size(); ++k) rest[k] -= d.weight * y[k];
+      rest_weight -= d.weight;
+    }
+    const bool has_rest = rest_weight > 1e-9;
+    if (has_rest)
+      for (double& r : rest) r /= rest_weight;
 
-    // D: the stored bands, unwindowed, plus the bands beyond the order completed from the vMF lobe of the mean
-    // normal (sh_lobe_tail.h), so a sharp NDF under a narrow lobe neither rings nor smears.
-    const double kappa = vmf_kappa_from_mean_length(std::min(1.0, len), INFINITY);
-    const Vec3 mu = len > 1e-6 ? Vec3(mean / len) : Vec3::UnitZ();
-    // The vMF lobe of the mean (lobe_specular.h): where it is wide, the product below misses how 1 / (n . v), G2
-    // and the bending of normals behind the view horizon vary over the NDF, and lobe_corrected_specular applies the
-    // lobe's integral to it.
-    const SpecularLobe lobe{1.0, f.to_world(mu).normalized(), kappa, spread.lobe.alpha};
     Vec3 out = Vec3::Zero();
     for_each_direct_light(*c.lighting, c.position, f.N, [&](const Vec3& l, const Vec3& e, double) {
       const double diffuse = std::max(0.0, sh_filtered_brdf(basis_, g, window, rhat_diffuse_, to_tangent(l)));
-      Vec3 specular =
-          evaluate_specular(spread, n, l, c.to_viewer,
-                            [&](const Vec3& h) {
-                              const Vec3 h_tangent = to_tangent(h);
-                              return std::max(0.0, sh_filtered_brdf(basis_, g, unwindowed_, rhat_specular_, h_tangent) +
-                                                       tail_.value(h_tangent.dot(mu), kappa));
-                            }) *
-          n.dot(l);
-      if (!lobe_specular_is_product(lobe, l, c.to_viewer)) {
-        // The lobe's D through the same expansion: every band of the vMF lobe (the tail from band 0).
-        const Vec3 lobe_product =
-            evaluate_specular(spread, n, l, c.to_viewer,
-                              [&](const Vec3& h) { return lobe_bands_.value(to_tangent(h).dot(mu), kappa); }) *
-            n.dot(l);
-        specular = lobe_corrected_specular(specular, lobe_product,
-                                           lobes_specular_integrated(brdf, std::span(&lobe, 1), l, c.to_viewer));
-      }
+      Vec3 specular = lobes_specular(brdf, deltas, l, c.to_viewer);
+      if (has_rest) specular += rest_weight * sh_specular(rest, f, brdf, l, c.to_viewer);
       out += (brdf.albedo * (diffuse / kPi) + specular).cwiseProduct(e);
     });
     if (c.lighting->has_distant) {
@@ -124,12 +129,48 @@ class ShNdfShader : public MaterialShader {
         irradiance += rule_.weights[q] * density * sh_irradiance(c.lighting->distant, f.to_world(rule_.directions[q]));
       }
       out += brdf.albedo.cwiseProduct(irradiance.cwiseMax(0.0)) / kPi;
-      out += distant_specular(*c.lighting, brdf.f0, n, c.to_viewer, spread.lobe.alpha);
+      out += distant_specular(*c.lighting, brdf.f0, n, c.to_viewer, spread_alpha);
     }
     return out;
   }
 
  private:
+  // The specular of an NDF known by its SH coefficients g (no deltas among them needed), under light l:
+  // D = the stored bands, unwindowed, plus the bands beyond the order completed from the vMF lobe of the mean
+  // normal (sh_lobe_tail.h), so a sharp NDF under a narrow lobe neither rings nor smears; F, G2 (at the lobe
+  // widened by Toksvig's variance of |mean|) and the denominators at the mean normal ([Han07] Eq. 7.12). Where the
+  // vMF lobe of the mean is wide (lobe_specular.h), that product misses how 1 / (n . v), G2 and the bending of
+  // normals behind the view horizon vary over the NDF, and lobe_corrected_specular applies the lobe's integral.
+  Vec3 sh_specular(std::span<const double> g, const SurfaceFrame& f, const Brdf& brdf, const Vec3& l,
+                   const Vec3& v) const {
+    const auto to_tangent = [&](const Vec3& w) { return Vec3(w.dot(f.T), w.dot(f.B), w.dot(f.N)); };
+    const MeanNormal mean = mean_normal(g);
+    const Vec3 n = facing_viewer(f.to_world(mean.direction).normalized(), v);
+    Brdf spread = brdf;
+    spread.lobe.alpha = clamp_filtered_alpha(brdf.lobe.alpha, toksvig_beckmann_alpha(brdf.lobe.alpha, mean.length));
+    const double kappa = vmf_kappa_from_mean_length(mean.length, INFINITY);
+    const Vec3& mu = mean.direction;
+    Vec3 specular =
+        evaluate_specular(spread, n, l, v,
+                          [&](const Vec3& h) {
+                            const Vec3 h_tangent = to_tangent(h);
+                            return std::max(0.0, sh_filtered_brdf(basis_, g, unwindowed_, rhat_specular_, h_tangent) +
+                                                     tail_.value(h_tangent.dot(mu), kappa));
+                          }) *
+        n.dot(l);
+    const SpecularLobe lobe{1.0, f.to_world(mu).normalized(), kappa, spread.lobe.alpha};
+    if (!lobe_specular_is_product(lobe, l, v)) {
+      // The lobe's D through the same expansion: every band of the vMF lobe (the tail from band 0).
+      const Vec3 lobe_product =
+          evaluate_specular(spread, n, l, v,
+                            [&](const Vec3& h) { return lobe_bands_.value(to_tangent(h).dot(mu), kappa); }) *
+          n.dot(l);
+      specular =
+          lobe_corrected_specular(specular, lobe_product, lobes_specular_integrated(brdf, std::span(&lobe, 1), l, v));
+    }
+    return specular;
+  }
+
   std::shared_ptr<const ShNdfTexture> texture_;
   ShBasisEvaluator basis_;
   std::vector<double> rhat_diffuse_, rhat_specular_;

@@ -5,9 +5,15 @@
 //
 //   diffuse, per point/directional light l:  albedo / pi * max(0, sum_l w_l A_l sum_m g_lm Y_lm(l))     Eq. (7.12)
 //     A_l the clamped cosine's rhat (pi, 2 pi / 3, pi / 4, 0, -pi / 24, ...), w_l the asset's window;
-//   specular, per light:  F(v.h) G2(l, v) D_g(h) / (4 (n.l)(n.v)) with the filtered distribution
-//     D_g(h) = max(0, sum_l w_l D_l sum_m g_lm Y_lm(h))                                                  Eq. (7.12)
-//     D_l the rhat of the material's D(cos) (GGX or Beckmann, microfacet_rhat), and F, G2 and the
+//   specular, per light: the lookups' finest-level parts are single normals (the renormalised bilinear normal,
+//     weight 1 - t of each trilinear probe) and shade exactly as the reference shades a normal (lobe_specular.h's
+//     product at that normal with the material's own alpha; a deviation from [Han07], which lets them through the
+//     expansion: on a long footprint a few such normals became one lobe widened by their spread, whose masking at
+//     a grazing view halved a point light's highlight). The rest of the NDF, g_rest = g - sum_d w_d Y(n_d), shades
+//     as F G2(l, v) D_g(h) / (4 (n.l)(n.v)) with the filtered distribution
+//     D_g(h) = max(0, sum_l D_l sum_m g_lm Y_lm(h)) + tail(h)                                             Eq. (7.12)
+//     D_l the rhat of the material's D(cos) (GGX or Beckmann, microfacet_rhat), the bands unwindowed and those
+//     beyond the order completed from the vMF lobe of the mean (sh_lobe_tail.h), and F, G2 and the
 //     denominators evaluated at the mean normal n = (g_11, g_1-1, g_10) / sqrt(3 / (4 pi)), normalised
 //     (the paper's "radially symmetric lobe times a factor of l and v"; [Han07] Sec. 7.3). G2 is that of the
 //     lobe widened by Toksvig's variance of |mean| (the filtered surface is rougher, and at grazing angles

@@ -55,6 +55,31 @@ TEST(ShNdfTexture, TexelCentresAndLevelBlends) {
   EXPECT_TRUE(std::isnan(g[0]));
 }
 
+TEST(ShNdfTexture, ReportsTheFinestLevelsDeltaAndItsWeight) {
+  // The sh shader shades a lookup's finest-level part as one normal: the lookup names it (the renormalised bilinear
+  // normal) with weight 1 - t, and g = that weight times Y(normal) plus the coarser level's share.
+  const NormalMap map = test::random_normal_map(8, 8, 22);
+  const ShNdfTexture t = ShNdfTexture::from_asset(sh_asset(map, 4));
+  const ShBasisEvaluator basis(4);
+  std::vector<double> g(25), g0(25), g1(25);
+  const Vec2 corner_uv = centre_uv(4, 4, 1, 2);
+  const Vec3 corner = (map.at(2, 4) + map.at(3, 4) + map.at(2, 5) + map.at(3, 5)).cast<double>().normalized();
+  for (const double lod : {0.0, 0.3, 0.99}) {
+    ShNdfTexture::FinestDelta delta;
+    t.lookup(corner_uv, lod, g, &delta);
+    EXPECT_NEAR(delta.weight, 1.0 - lod, 1e-12) << lod;
+    EXPECT_LT((delta.normal - corner).norm(), 1e-6) << lod;
+    t.lookup(corner_uv, 0.0, g0);
+    t.lookup(corner_uv, 1.0, g1);
+    for (int k = 0; k < 25; ++k) EXPECT_NEAR(g[size_t(k)], delta.weight * g0[size_t(k)] + lod * g1[size_t(k)], 1e-12);
+  }
+  for (const double lod : {1.0, 1.5, 3.0}) {
+    ShNdfTexture::FinestDelta delta{0.5, Vec3::UnitX()};
+    t.lookup(corner_uv, lod, g, &delta);
+    EXPECT_EQ(delta.weight, 0.0) << lod;
+  }
+}
+
 TEST(VmfTexture, InterpolatesPremultipliedLobes) {
   // Two columns of different constant normals: level 0 holds (1, n) in slot 0 for both.
   NormalMap map;
