@@ -34,8 +34,8 @@ class CreaseCommand : public NormalMapBakingCommand {
 
   void bake(Progress& progress) override {
     options_ = crease_bake_options(parameters());
-    baked_ = bake_crease(map().map, curves_, options_, progress);
-    asset_ = crease_asset_writer(baked_, options_, map().record, record_);
+    baked_ = bake_crease(take_map().map, curves_, options_, progress);
+    asset_ = crease_asset_writer(std::move(baked_), options_, map().record, record_);  // baked_ keeps its statistics
   }
 
   std::string summary() const override {

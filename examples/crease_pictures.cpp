@@ -139,9 +139,9 @@ int main(int argc, char** argv) {
           for (uint32_t x = 0; x < size; ++x)
             map.at(x, row) = mbk::panel_normal(layout, mbk::Vec2(x + 0.5, row + 0.5)).cast<float>();
       const mbk::CreaseBakeOptions options;
-      const mbk::BakedCrease baked = mbk::bake_crease(map, curves, options, mbk::Progress::silent());
+      mbk::BakedCrease baked = mbk::bake_crease(map, curves, options, mbk::Progress::silent());
       const std::vector<uint8_t> bytes =
-          mbk::crease_asset_writer(baked, options, mbk::InputRecord{}, mbk::CurvesRecord{}).serialize();
+          mbk::crease_asset_writer(std::move(baked), options, mbk::InputRecord{}, mbk::CurvesRecord{}).serialize();
       const mbk::CreaseField field = mbk::read_crease_field(mbk::Asset::parse(bytes, "baked"));
       const std::string name = point_sampled ? "exact" : "gen";
       render(field, layout, x0, y0, w, h, name, dir + "/panels_" + name + ".png");

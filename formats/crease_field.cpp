@@ -54,13 +54,20 @@ int crease_pair_bit(int a, int b) {
 }
 
 void CreaseField::allocate(uint32_t w, uint32_t h) {
-  width = w;
-  height = h;
+  allocate_lattice(w, h);
   const size_t samples = size_t(w + 2) * (h + 2);
-  normals.assign(size_t(w) * h * 3, 0.0f);
   distance.assign(samples, 0.0f);
   gradient.assign(samples * 2, 0.0f);
   side.assign(samples, int8_t(1));
+}
+
+void CreaseField::allocate_lattice(uint32_t w, uint32_t h) {
+  width = w;
+  height = h;
+  normals.assign(size_t(w) * h * 3, 0.0f);
+  distance.clear();
+  gradient.clear();
+  side.clear();
   crossing_h.assign(size_t(h + 2) * (w + 1), kCreaseNoCrossing);
   crossing_v.assign(size_t(h + 1) * (w + 2), kCreaseNoCrossing);
   segments.assign(size_t(h + 1) * (w + 1), 0);
@@ -124,21 +131,21 @@ CreaseCellEdges crease_cell_edges(const CreaseField& f, uint32_t i, uint32_t j) 
   return c;
 }
 
-void add_crease_sections(AssetWriter& writer, const CreaseField& f) {
+void add_crease_sections(AssetWriter& writer, CreaseField&& f) {
   for (const SectionShape& s : section_shapes(f.width, f.height)) {
     const std::string name = s.name;
-    if (name == kCreaseNormalsSection) writer.add(name, s.shape, f.normals);
-    if (name == kCreaseDistanceSection) writer.add(name, s.shape, f.distance);
-    if (name == kCreaseGradientSection) writer.add(name, s.shape, f.gradient);
-    if (name == kCreaseSideSection) writer.add(name, s.shape, f.side);
-    if (name == kCreaseCrossingHSection) writer.add(name, s.shape, f.crossing_h);
-    if (name == kCreaseCrossingVSection) writer.add(name, s.shape, f.crossing_v);
-    if (name == kCreaseSegmentsSection) writer.add(name, s.shape, f.segments);
+    if (name == kCreaseNormalsSection) writer.add(name, s.shape, std::move(f.normals));
+    if (name == kCreaseDistanceSection) writer.add(name, s.shape, std::move(f.distance));
+    if (name == kCreaseGradientSection) writer.add(name, s.shape, std::move(f.gradient));
+    if (name == kCreaseSideSection) writer.add(name, s.shape, std::move(f.side));
+    if (name == kCreaseCrossingHSection) writer.add(name, s.shape, std::move(f.crossing_h));
+    if (name == kCreaseCrossingVSection) writer.add(name, s.shape, std::move(f.crossing_v));
+    if (name == kCreaseSegmentsSection) writer.add(name, s.shape, std::move(f.segments));
   }
   const uint64_t n = f.junction_cells.size();
-  writer.add(kCreaseJunctionCellsSection, {n}, f.junction_cells);
-  writer.add(kCreaseJunctionPointsSection, {n, 2}, f.junction_points);
-  writer.add(kCreaseJunctionSpokesSection, {n}, f.junction_spokes);
+  writer.add(kCreaseJunctionCellsSection, {n}, std::move(f.junction_cells));
+  writer.add(kCreaseJunctionPointsSection, {n, 2}, std::move(f.junction_points));
+  writer.add(kCreaseJunctionSpokesSection, {n}, std::move(f.junction_spokes));
 }
 
 std::string parse_crease_size(const Asset& asset, uint32_t& width, uint32_t& height) {

@@ -92,8 +92,10 @@ struct CreaseField {
     const uint32_t y = std::clamp<int64_t>(int64_t(j) - 1, 0, height - 1);
     return &normals[(size_t(y) * width + x) * 3];
   }
-  // Sizes all arrays for width x height: crossings none, no junction, everything else zero.
+  // Sizes all arrays for width x height: crossings none, no junction, side +1, everything else zero.
   void allocate(uint32_t w, uint32_t h);
+  // The same for the normals, crossings and segments only (the distance maps stay empty until made).
+  void allocate_lattice(uint32_t w, uint32_t h);
   // The junction record of a cell (by cell index), or -1.
   int64_t junction_index(size_t cell) const;
 };
@@ -128,8 +130,9 @@ inline constexpr const char* kCreaseJunctionCellsSection = "junction_cells";
 inline constexpr const char* kCreaseJunctionPointsSection = "junction_points";
 inline constexpr const char* kCreaseJunctionSpokesSection = "junction_spokes";
 
-// Adds the ten sections, with the shapes above, to an asset being written.
-void add_crease_sections(AssetWriter& writer, const CreaseField& field);
+// Adds the ten sections, with the shapes above, to an asset being written; the field's arrays move into the writer
+// (no copy of the file's bytes).
+void add_crease_sections(AssetWriter& writer, CreaseField&& field);
 
 // Reads parameters.width/height; empty when they are integers in 1..16384, else what is wrong.
 std::string parse_crease_size(const Asset& asset, uint32_t& width, uint32_t& height);

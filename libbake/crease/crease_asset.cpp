@@ -5,6 +5,7 @@
 
 #include "formats/error.h"
 #include "libbake/core/parallel.h"
+#include "libbake/core/release_free_memory.h"
 #include "libbake/crease/gradient_smoothing.h"
 
 namespace mbk {
@@ -23,8 +24,7 @@ CurvesRecord curves_record(const std::filesystem::path& path, const CurveSet& cu
   return record;
 }
 
-BakedCrease bake_crease(const NormalMap& map, const CurveSet& curves, const CreaseBakeOptions& options,
-                        Progress& progress) {
+BakedCrease bake_crease(NormalMap map, const CurveSet& curves, const CreaseBakeOptions& options, Progress& progress) {
   if (!(options.band > 0.0 && options.band <= 1e6))
     throw Error(ExitCode::bad_command_line, "--band must be in (0, 1e6] texels");
   if (options.smooth_iterations > kCreaseMaxSmoothIterations)
@@ -33,26 +33,32 @@ BakedCrease bake_crease(const NormalMap& map, const CurveSet& curves, const Crea
   if (map.texels.empty()) throw Error(ExitCode::runtime_failure, "internal: empty normal map");
   BakedCrease baked;
   CreaseField& f = baked.field;
-  f.allocate(map.width, map.height);
+  f.allocate_lattice(map.width, map.height);  // the distance maps are sized when made (crease_distance.h)
   parallel_for(0, map.height, [&](int64_t row) {
     for (size_t k = size_t(row) * map.width; k < size_t(row + 1) * map.width; ++k)
       for (int c = 0; c < 3; ++c) f.normals[3 * k + size_t(c)] = map.texels[k][c];
   });
+  decltype(map.texels)().swap(map.texels);
   baked.simplify = simplify_curves(curves, f);
-  const std::vector<CurveSegment> network = network_segments(f);
-  baked.network_segments = network.size();
-  if (network.empty())
-    throw Error(ExitCode::invalid_input,
-                "no curve crosses a cell of the sample lattice (curves shorter than a texel between two texel "
-                "centres leave no discontinuity): nothing to bake");
-  baked.distance = compute_distance_maps(network, options.band, f, progress);
+  release_free_memory();  // the walk's lists (peak memory: each phase's freed blocks returned before the next's)
+  {                       // the network is freed before the smoothing's buffers are made
+    const std::vector<CurveSegment> network = network_segments(f);
+    release_free_memory();  // its per-row lists
+    baked.network_segments = network.size();
+    if (network.empty())
+      throw Error(ExitCode::invalid_input,
+                  "no curve crosses a cell of the sample lattice (curves shorter than a texel between two texel "
+                  "centres leave no discontinuity): nothing to bake");
+    baked.distance = compute_distance_maps(network, options.band, f, progress);
+  }
+  release_free_memory();
   baked.max_smoothing_turn = smooth_gradient(f, options.smooth_iterations);
   return baked;
 }
 
-AssetWriter crease_asset_writer(const BakedCrease& baked, const CreaseBakeOptions& options, const InputRecord& map,
+AssetWriter crease_asset_writer(BakedCrease&& baked, const CreaseBakeOptions& options, const InputRecord& map,
                                 const CurvesRecord& curves) {
-  const CreaseField& f = baked.field;
+  CreaseField& f = baked.field;
   nlohmann::json metadata;
   metadata["inputs"] = nlohmann::json::array({map.to_json(), curves.to_json()});
   metadata["parameters"] = {{"width", f.width},
@@ -78,7 +84,7 @@ AssetWriter crease_asset_writer(const BakedCrease& baked, const CreaseBakeOption
                             {"distance", baked.distance.to_json()},
                             {"max_smoothing_turn_degrees", baked.max_smoothing_turn * 180.0 / M_PI}};
   AssetWriter writer("crease", std::move(metadata));
-  add_crease_sections(writer, f);
+  add_crease_sections(writer, std::move(f));
   return writer;
 }
 

@@ -39,9 +39,9 @@ struct BakedCrease {
 };
 
 // Throws Error(bad_command_line) for a band not in (0, 1e6] or too many iterations; Error(invalid_input) when
-// no curve crosses a cell edge (nothing to bake).
-BakedCrease bake_crease(const NormalMap& map, const CurveSet& curves, const CreaseBakeOptions& options,
-                        Progress& progress);
+// no curve crosses a cell edge (nothing to bake). The map's texels are freed once copied into the field (pass a
+// copy to keep them): the bake's peak memory is then about the field's.
+BakedCrease bake_crease(NormalMap map, const CurveSet& curves, const CreaseBakeOptions& options, Progress& progress);
 
 // What the asset records about the curves file.
 struct CurvesRecord {
@@ -52,7 +52,8 @@ struct CurvesRecord {
 // The record of a curves file as read (its bytes hashed again from disk). Error(io_failure) when unreadable.
 CurvesRecord curves_record(const std::filesystem::path& path, const CurveSet& curves);
 
-AssetWriter crease_asset_writer(const BakedCrease& baked, const CreaseBakeOptions& options, const InputRecord& map,
+// The field's arrays move into the writer (the file's bytes are then in memory once); baked keeps its statistics.
+AssetWriter crease_asset_writer(BakedCrease&& baked, const CreaseBakeOptions& options, const InputRecord& map,
                                 const CurvesRecord& curves);
 
 }  // namespace mbk

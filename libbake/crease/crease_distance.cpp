@@ -5,7 +5,9 @@
 #include <cmath>
 #include <limits>
 
+#include "formats/error.h"
 #include "libbake/core/parallel.h"
+#include "libbake/core/release_free_memory.h"
 
 namespace mbk {
 
@@ -34,11 +36,16 @@ class NearestSegments {
         nx_(nx),
         ny_(ny),
         dist_(size_t(nx * ny), std::numeric_limits<double>::infinity()),
-        nearest_(size_t(nx * ny), -1) {}
+        nearest_(size_t(nx * ny), -1) {
+    if (segments.size() > size_t(std::numeric_limits<int32_t>::max()))
+      throw Error(ExitCode::runtime_failure, "internal: more than 2^31 - 1 crease network segments");
+  }
 
   static Vec2 position(int64_t i, int64_t j) { return Vec2(double(i) - 0.5, double(j) - 0.5); }
   const std::vector<double>& distances() const { return dist_; }
   int64_t nearest(size_t k) const { return nearest_[k]; }
+  // Frees the distances (nearest() stays): the maps are then made from the nearest segments alone.
+  void release_distances() { std::vector<double>().swap(dist_); }
 
   // Brute force over each segment's bounding box grown by the band, bands of rows in parallel: each band takes the
   // segments whose box meets it (the result does not depend on the order of the offers).
@@ -47,23 +54,24 @@ class NearestSegments {
     struct Box {
       int64_t i0, i1, j0, j1;
     };
+    // A segment's box, computed where needed (not stored: the boxes of every segment were the largest array here).
+    const auto box_of = [&](const CurveSegment& seg) {
+      return Box{std::max<int64_t>(0, int64_t(std::ceil(std::min(seg.a.x(), seg.b.x()) - band + 0.5))),
+                 std::min<int64_t>(nx_ - 1, int64_t(std::floor(std::max(seg.a.x(), seg.b.x()) + band + 0.5))),
+                 std::max<int64_t>(0, int64_t(std::ceil(std::min(seg.a.y(), seg.b.y()) - band + 0.5))),
+                 std::min<int64_t>(ny_ - 1, int64_t(std::floor(std::max(seg.a.y(), seg.b.y()) + band + 0.5)))};
+    };
     constexpr int64_t kBandRows = 16;
-    std::vector<Box> boxes(segments_.size());
-    std::vector<std::vector<int64_t>> band_segments(size_t((ny_ + kBandRows - 1) / kBandRows));
+    std::vector<std::vector<int32_t>> band_segments(size_t((ny_ + kBandRows - 1) / kBandRows));
     for (size_t s = 0; s < segments_.size(); ++s) {
-      const CurveSegment& seg = segments_[s];
-      Box& b = boxes[s];
-      b.i0 = std::max<int64_t>(0, int64_t(std::ceil(std::min(seg.a.x(), seg.b.x()) - band + 0.5)));
-      b.i1 = std::min<int64_t>(nx_ - 1, int64_t(std::floor(std::max(seg.a.x(), seg.b.x()) + band + 0.5)));
-      b.j0 = std::max<int64_t>(0, int64_t(std::ceil(std::min(seg.a.y(), seg.b.y()) - band + 0.5)));
-      b.j1 = std::min<int64_t>(ny_ - 1, int64_t(std::floor(std::max(seg.a.y(), seg.b.y()) + band + 0.5)));
+      const Box b = box_of(segments_[s]);
       if (b.i0 > b.i1 || b.j0 > b.j1) continue;
-      for (int64_t r = b.j0 / kBandRows; r <= b.j1 / kBandRows; ++r) band_segments[size_t(r)].push_back(int64_t(s));
+      for (int64_t r = b.j0 / kBandRows; r <= b.j1 / kBandRows; ++r) band_segments[size_t(r)].push_back(int32_t(s));
     }
     parallel_for(0, int64_t(band_segments.size()), [&](int64_t r) {
       const int64_t first = r * kBandRows, last = std::min(ny_, first + kBandRows) - 1;
-      for (int64_t s : band_segments[size_t(r)]) {
-        const Box& b = boxes[size_t(s)];
+      for (int32_t s : band_segments[size_t(r)]) {
+        const Box b = box_of(segments_[size_t(s)]);
         for (int64_t j = std::max(first, b.j0); j <= std::min(last, b.j1); ++j)
           for (int64_t i = b.i0; i <= b.i1; ++i) offer(i, j, s);
       }
@@ -96,7 +104,7 @@ class NearestSegments {
   }
 
  private:
-  void offer(int64_t i, int64_t j, int64_t s) {
+  void offer(int64_t i, int64_t j, int32_t s) {
     const size_t k = size_t(j * nx_ + i);
     const double d = segment_distance(segments_[size_t(s)], position(i, j));
     if (d < dist_[k] || (d == dist_[k] && s < nearest_[k])) {
@@ -112,15 +120,15 @@ class NearestSegments {
     if (ni < 0 || nj < 0 || ni >= nx_ || nj >= ny_) return;
     const size_t k = size_t(j * nx_ + i);
     if (dist_[k] < settled_below_) return;
-    const int64_t s = nearest_[size_t(nj * nx_ + ni)];
+    const int32_t s = nearest_[size_t(nj * nx_ + ni)];
     if (s >= 0 && s != nearest_[k]) offer(i, j, s);
   }
 
   const std::vector<CurveSegment>& segments_;
   int64_t nx_, ny_;
   std::vector<double> dist_;
-  std::vector<int64_t> nearest_;
-  double settled_below_ = 0.0;  // set by offer_within: samples nearer than this to a segment are final
+  std::vector<int32_t> nearest_;  // -1: none yet
+  double settled_below_ = 0.0;    // set by offer_within: samples nearer than this to a segment are final
 };
 
 }  // namespace
@@ -137,6 +145,13 @@ DistanceStatistics compute_distance_maps(const std::vector<CurveSegment>& segmen
   for (double d : found.distances()) stats.samples_in_band += d <= band;
   found.propagate(progress);
   // The maps from each sample's nearest segment, rows in parallel (the largest distance per row, then over rows).
+  // The maps are sized here, once the search is done and its distances freed: the bake's peak memory is then the
+  // field plus the nearest-segment indices.
+  found.release_distances();
+  release_free_memory();  // and offer_within's per-band lists
+  field.distance.assign(size_t(nx * ny), 0.0f);
+  field.gradient.assign(size_t(nx * ny) * 2, 0.0f);
+  field.side.assign(size_t(nx * ny), int8_t(1));
   std::vector<double> row_max(size_t(ny), 0.0);
   parallel_for(0, ny, [&](int64_t j) {
     for (int64_t i = 0; i < nx; ++i) {

@@ -32,8 +32,8 @@ struct DistanceStatistics {
 // Exact distance from p to segment s, and the nearest point.
 double segment_distance(const CurveSegment& s, const Vec2& p, Vec2* nearest = nullptr);
 
-// Fills field.distance, gradient (unsmoothed) and side from the network segments. band > 0. segments must not
-// be empty.
+// Sizes and fills field.distance, gradient (unsmoothed) and side from the network segments (the field's lattice
+// allocated). band > 0. segments must not be empty.
 DistanceStatistics compute_distance_maps(const std::vector<CurveSegment>& segments, double band, CreaseField& field,
                                          Progress& progress);
 

@@ -52,16 +52,16 @@ EffectInfo crease_effect() {
     const BakeInput map = normal_map_input(m);
     const std::filesystem::path curves = use.files.at("curves");
     const CreaseBakeOptions options = crease_bake_options(use.options);
-    std::vector<AssetRecipe> recipes{{"crease",
-                                      {{"smooth_iterations", options.smooth_iterations}, {"band", options.band}},
-                                      {map, {curves, std::nullopt, "--curves"}},
-                                      [map, curves, options](Progress& progress) {
-                                        const LoadedNormalMap loaded =
-                                            load_normal_map(map.path, map.normal_map->load_options());
-                                        const CurveSet set = load_curves(curves, loaded.map.width, loaded.map.height);
-                                        return crease_asset_writer(bake_crease(loaded.map, set, options, progress),
-                                                                   options, loaded.record, curves_record(curves, set));
-                                      }}};
+    std::vector<AssetRecipe> recipes{
+        {"crease",
+         {{"smooth_iterations", options.smooth_iterations}, {"band", options.band}},
+         {map, {curves, std::nullopt, "--curves"}},
+         [map, curves, options](Progress& progress) {
+           const LoadedNormalMap loaded = load_normal_map(map.path, map.normal_map->load_options());
+           const CurveSet set = load_curves(curves, loaded.map.width, loaded.map.height);
+           return crease_asset_writer(bake_crease(std::move(loaded.map), set, options, progress), options,
+                                      loaded.record, curves_record(curves, set));
+         }}};
     recipes[0].technique_values = use.options;
     return recipes;
   };

@@ -23,9 +23,10 @@ TEST(GroupedByKey, IsAStableSortByKeyOfTheListsInOrderWithEveryKeysRange) {
     std::vector<Record> in(20000);
     for (Record& r : in) r = {key(rng), value(rng)};
     // The records in three lists of unequal lengths (one empty), as chunks of a parallel producer would be.
-    const std::vector<std::vector<Record>> lists = {
+    std::vector<std::vector<Record>> lists = {
         std::vector<Record>(in.begin(), in.begin() + 5000), {}, std::vector<Record>(in.begin() + 5000, in.end())};
-    const GroupedByKey<Record> g = group_by_key(lists, keys, [](const Record& r) { return r.key; });
+    const GroupedByKey<Record> g = group_by_key(std::move(lists), keys, [](const Record& r) { return r.key; });
+    for (const std::vector<Record>& list : lists) EXPECT_EQ(list.capacity(), 0u);  // consumed: freed once placed
     std::vector<Record> sorted = in;
     std::stable_sort(sorted.begin(), sorted.end(), [](const Record& a, const Record& b) { return a.key < b.key; });
     ASSERT_EQ(g.records.size(), sorted.size());

@@ -50,7 +50,7 @@ inline std::vector<uint8_t> crease_bytes(const std::function<void(CreaseField&)>
                          {"conventions", {{"normal_convention", "+Y"}}},
                          {"statistics", nlohmann::json::object()}};
   AssetWriter w("crease", meta);
-  add_crease_sections(w, f);
+  add_crease_sections(w, std::move(f));
   return w.serialize();
 }
 

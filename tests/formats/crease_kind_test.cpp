@@ -26,7 +26,8 @@ TEST(CreaseKind, BakedAssetIsValidAndReadsBackExactly) {
   curves.curves.push_back({{{6.5, 0.0}, {6.5, 10.0}}, false, "test"});  // along a lattice line
   const NormalMap map = test::map_from(13, 10, [](const Vec2& p) { return Vec3(0.1 * p.x(), -0.05 * p.y(), 1.0); });
   const BakedCrease baked = test::bake(map, curves);
-  const std::vector<uint8_t> bytes = crease_asset_writer(baked, {}, InputRecord{}, CurvesRecord{}).serialize();
+  const std::vector<uint8_t> bytes =
+      crease_asset_writer(BakedCrease(baked), {}, InputRecord{}, CurvesRecord{}).serialize();
   EXPECT_TRUE(error_ids(bytes).empty());
   const CreaseField f = read_crease_field(Asset::parse(bytes, "memory"));
   EXPECT_EQ(f.width, 13u);
@@ -45,7 +46,8 @@ TEST(CreaseKind, JunctionRecordsAreValidAndReadBackExactly) {
       test::bake(test::flat_map(10, 10),
                  test::curves_of({{{4.3, 4.2}, {4.3, 0.0}}, {{4.3, 4.2}, {10.0, 4.2}}, {{0.0, 9.0}, {4.3, 4.2}}}));
   ASSERT_EQ(baked.field.junction_cells.size(), 1u);
-  const std::vector<uint8_t> bytes = crease_asset_writer(baked, {}, InputRecord{}, CurvesRecord{}).serialize();
+  const std::vector<uint8_t> bytes =
+      crease_asset_writer(BakedCrease(baked), {}, InputRecord{}, CurvesRecord{}).serialize();
   EXPECT_TRUE(error_ids(bytes).empty());
   const CreaseField f = read_crease_field(Asset::parse(bytes, "memory"));
   EXPECT_EQ(f.junction_cells, baked.field.junction_cells);
