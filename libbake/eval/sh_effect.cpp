@@ -74,20 +74,33 @@ class ShNdfShader : public MaterialShader {
 
   Vec3 radiance(const ShadingContext& c, const Brdf& brdf) const override {
     // The footprint's NDF: SH coefficients are linear in it, so the mean of its probes' coefficients. The probes'
-    // finest-level parts are single normals (deltas), also kept apart: the specular shades them exactly.
-    std::vector<double> g(size_t(basis_.count()), 0.0), probe_g(g.size());
+    // finest-level parts are single normals (deltas), also kept apart: the specular shades them exactly as the
+    // reference shades a normal (lobe_specular.h's product at that normal, the material's own alpha), and only the
+    // rest, g_rest = g - sum_d w_d Y(n_d) of weight 1 - sum_d w_d, through the SH product (sh_specular). So a long
+    // footprint that reads a few finest-level normals keeps their highlight instead of spreading it through one
+    // widened lobe whose masking (at a grazing view) darkens it.
+    std::vector<double> g(size_t(basis_.count()), 0.0), probe_g(g.size()), rest(g.size(), 0.0), y(g.size());
+    double rest_weight = 1.0;
     std::vector<SpecularLobe> deltas;  // world-space normals, kappa = inf
     const SurfaceFrame& f = c.frame;
     const FootprintProbes probes = footprint_probes(c.uv, c.footprint, texture_->width(), texture_->height());
     for (const FootprintProbe& p : probes) {
       ShNdfTexture::FinestDelta delta;
       texture_->lookup(p.uv, p.lod, probe_g, &delta);
-      for (size_t k = 0; k < g.size(); ++k) g[k] += probe_g[k] / probes.size();
-      if (delta.weight > 0.0)
-        deltas.push_back(
-            {delta.weight / probes.size(), f.to_world(delta.normal).normalized(), INFINITY, brdf.lobe.alpha});
+      const double w = delta.weight / probes.size();
+      if (w > 0.0) basis_.evaluate(delta.normal, y);
+      for (size_t k = 0; k < g.size(); ++k) {
+        g[k] += probe_g[k] / probes.size();
+        rest[k] += probe_g[k] / probes.size() - (w > 0.0 ? w * y[k] : 0.0);
+      }
+      if (w > 0.0) {
+        deltas.push_back({w, f.to_world(delta.normal).normalized(), INFINITY, brdf.lobe.alpha});
+        rest_weight -= w;
+      }
     }
-    const auto to_tangent = [&](const Vec3& w) { return Vec3(w.dot(f.T), w.dot(f.B), w.dot(f.N)); };
+    const bool has_rest = rest_weight > 1e-9;
+    if (has_rest)
+      for (double& r : rest) r /= rest_weight;
     const std::span<const double> window(texture_->window());
 
     // The footprint's mean normal and the spread of its NDF as one lobe (Toksvig's variance of |mean|): the
@@ -97,24 +110,9 @@ class ShNdfShader : public MaterialShader {
     const double spread_alpha =
         clamp_filtered_alpha(brdf.lobe.alpha, toksvig_beckmann_alpha(brdf.lobe.alpha, mean.length));
 
-    // The specular of the NDF without its deltas, g_rest = g - sum_d w_d Y(n_d) of weight 1 - sum_d w_d: each
-    // delta is one normal and shades as the reference shades it (lobe_specular.h's product at that normal, the
-    // material's own alpha), so a long footprint that reads a few finest-level normals keeps their highlight
-    // instead of spreading it through one widened lobe whose masking (at a grazing view) darkens it.
-    std::vector<double> rest = g, y(g.size());
-    double rest_weight = 1.0;
-    for (const SpecularLobe& d : deltas) {
-      basis_.evaluate(to_tangent(d.mu), y);
-      for (size_t k = 0; k < rest.size(); ++k) rest[k] -= d.weight * y[k];
-      rest_weight -= d.weight;
-    }
-    const bool has_rest = rest_weight > 1e-9;
-    if (has_rest)
-      for (double& r : rest) r /= rest_weight;
-
     Vec3 out = Vec3::Zero();
     for_each_direct_light(*c.lighting, c.position, f.N, [&](const Vec3& l, const Vec3& e, double) {
-      const double diffuse = std::max(0.0, sh_filtered_brdf(basis_, g, window, rhat_diffuse_, to_tangent(l)));
+      const double diffuse = std::max(0.0, sh_filtered_brdf(basis_, g, window, rhat_diffuse_, f.to_tangent(l)));
       Vec3 specular = lobes_specular(brdf, deltas, l, c.to_viewer);
       if (has_rest) specular += rest_weight * sh_specular(rest, f, brdf, l, c.to_viewer);
       out += (brdf.albedo * (diffuse / kPi) + specular).cwiseProduct(e);
@@ -143,7 +141,6 @@ class ShNdfShader : public MaterialShader {
   // normals behind the view horizon vary over the NDF, and lobe_corrected_specular applies the lobe's integral.
   Vec3 sh_specular(std::span<const double> g, const SurfaceFrame& f, const Brdf& brdf, const Vec3& l,
                    const Vec3& v) const {
-    const auto to_tangent = [&](const Vec3& w) { return Vec3(w.dot(f.T), w.dot(f.B), w.dot(f.N)); };
     const MeanNormal mean = mean_normal(g);
     const Vec3 n = facing_viewer(f.to_world(mean.direction).normalized(), v);
     Brdf spread = brdf;
@@ -153,7 +150,7 @@ class ShNdfShader : public MaterialShader {
     Vec3 specular =
         evaluate_specular(spread, n, l, v,
                           [&](const Vec3& h) {
-                            const Vec3 h_tangent = to_tangent(h);
+                            const Vec3 h_tangent = f.to_tangent(h);
                             return std::max(0.0, sh_filtered_brdf(basis_, g, unwindowed_, rhat_specular_, h_tangent) +
                                                      tail_.value(h_tangent.dot(mu), kappa));
                           }) *
@@ -163,7 +160,7 @@ class ShNdfShader : public MaterialShader {
       // The lobe's D through the same expansion: every band of the vMF lobe (the tail from band 0).
       const Vec3 lobe_product =
           evaluate_specular(spread, n, l, v,
-                            [&](const Vec3& h) { return lobe_bands_.value(to_tangent(h).dot(mu), kappa); }) *
+                            [&](const Vec3& h) { return lobe_bands_.value(f.to_tangent(h).dot(mu), kappa); }) *
           n.dot(l);
       specular =
           lobe_corrected_specular(specular, lobe_product, lobes_specular_integrated(brdf, std::span(&lobe, 1), l, v));

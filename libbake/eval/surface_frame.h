@@ -13,6 +13,7 @@ namespace mbk {
 struct SurfaceFrame {
   Vec3 T, B, N;
   Vec3 to_world(const Vec3& t) const { return t.x() * T + t.y() * B + t.z() * N; }
+  Vec3 to_tangent(const Vec3& w) const { return Vec3(w.dot(T), w.dot(B), w.dot(N)); }  // the inverse (orthonormal)
 };
 
 SurfaceFrame surface_frame(const SurfaceHit& hit, const Vec3& to_viewer);

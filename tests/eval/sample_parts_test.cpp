@@ -94,17 +94,33 @@ TEST(SampleParts, PartsTileTheSample) {
   }
 }
 
+// The plane receding to the horizon over a 64 x 64 bumpy map (uv scale 60) and its 16 x 16-ray reference, made once
+// for the render tests below; render() bakes and renders an effect on it.
+struct RecedingBumpyPlane {
+  test::ScratchDir dir{"sample_parts_receding"};
+  Image reference;
+  RecedingBumpyPlane() {
+    testing::write_bumpy_map(dir / "map.exr", 64, 64);
+    reference = render("mip", 16, 1);
+  }
+  Image render(const nlohmann::json& effect, uint32_t reference_rays, int max_parts) const {
+    return test::render_in(dir.path(), test::receding_plane_scene(effect, 60.0), reference_rays, max_parts);
+  }
+};
+
+const RecedingBumpyPlane& receding_bumpy_plane() {
+  static const RecedingBumpyPlane plane;
+  return plane;
+}
+
 TEST(SampleParts, LongFootprintsInPartsAreCloserToTheReference) {
-  test::ScratchDir dir("sample_parts_receding");
-  testing::write_bumpy_map(dir / "map.exr", 64, 64);
-  const auto render = [&](const nlohmann::json& effect, uint32_t reference, int max_parts) {
-    return test::render_in(dir.path(), test::receding_plane_scene(effect, 60.0), reference, max_parts);
-  };
-  const Image reference = render("mip", 16, 1);
+  const RecedingBumpyPlane& plane = receding_bumpy_plane();
+  const auto render = [&](const nlohmann::json& effect, int max_parts) { return plane.render(effect, 0, max_parts); };
+  const Image& reference = plane.reference;
   for (const nlohmann::json& effect :
        {nlohmann::json("mip"), nlohmann::json("toksvig"), nlohmann::json{{"name", "vmf"}, {"lobes", 2}}}) {
-    const double whole = compare_images(render(effect, 0, 1), reference).rmse;
-    const double parts = compare_images(render(effect, 0, 4), reference).rmse;
+    const double whole = compare_images(render(effect, 1), reference).rmse;
+    const double parts = compare_images(render(effect, 4), reference).rmse;
     std::cout << effect.dump() << ": rmse vs reference, footprints whole " << whole << ", in up to 4 parts " << parts
               << "\n";
     EXPECT_LT(parts, 0.8 * whole) << effect.dump();
@@ -118,16 +134,11 @@ TEST(SampleParts, ShKeepsTheHighlightOfTheFinestLevelNormalsAPartReads) {
   // rows, 0.008 whole); the deltas now shade as the reference shades a normal (sh_effect.cpp). Property: in parts,
   // sh is as close to the reference as toksvig (which shades the same bilinear normals at the finest level), and
   // splitting no longer makes it worse.
-  test::ScratchDir dir("sample_parts_sh");
-  testing::write_bumpy_map(dir / "map.exr", 64, 64);
-  const auto render = [&](const nlohmann::json& effect, uint32_t reference, int max_parts) {
-    return test::render_in(dir.path(), test::receding_plane_scene(effect, 60.0), reference, max_parts);
-  };
-  const Image reference = render("mip", 16, 1);
+  const RecedingBumpyPlane& plane = receding_bumpy_plane();
   const nlohmann::json sh = {{"name", "sh"}, {"order", 8}};
-  const double toksvig = compare_images(render("toksvig", 0, 4), reference).rmse;
-  const double sh_whole = compare_images(render(sh, 0, 1), reference).rmse;
-  const double sh_parts = compare_images(render(sh, 0, 4), reference).rmse;
+  const double toksvig = compare_images(plane.render("toksvig", 0, 4), plane.reference).rmse;
+  const double sh_whole = compare_images(plane.render(sh, 0, 1), plane.reference).rmse;
+  const double sh_parts = compare_images(plane.render(sh, 0, 4), plane.reference).rmse;
   std::cout << "receding plane, rmse vs reference: toksvig in parts " << toksvig << ", sh8 whole " << sh_whole
             << ", sh8 in parts " << sh_parts << "\n";
   EXPECT_LT(sh_parts, 1.1 * toksvig);
