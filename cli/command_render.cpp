@@ -1,11 +1,12 @@
-// `microbake render SCENE -o OUT.{exr,png} [--spp N] [--max-probes N] [--max-parts N] [--reference N] [--seed S]
-// [--assets DIR]`:
+// `microbake render SCENE -o OUT.{exr,png} [--spp N] [--edge-spp N] [--max-probes N] [--max-parts N] [--reference N]
+// [--seed S] [--assets DIR]`:
 // the reference shader evaluator (libbake/eval/renderer.h). EXR output is linear radiance, PNG is tone-mapped for
 // viewing (libbake/eval/render_output.h). Effects read their baked assets from the asset folder (default
 // <scene folder>/<scene stem>.assets, as `bake` writes it); --reference needs no assets. Prints one line, or with
 // --format json one object with the stage times (schema "microbake.render/1", formats/schema/render.schema.json).
 #include <cstdio>
 #include <iostream>
+#include <string>
 
 #include "cli/command.h"
 #include "cli/common_options.h"
@@ -27,6 +28,12 @@ class RenderCommand : public Command {
     add_output_option(app, options_.output, "rendered image (.exr: linear float; .png: clamped, sRGB-encoded 8-bit)");
     spp_option_ = add_parameter_option(
         app, integer_option("--spp", 1, 65536, 1, "Samples per pixel, stratified (render mode)"), options_.spp);
+    edge_spp_option_ = add_parameter_option(
+        app,
+        integer_option("--edge-spp", 0, 65536, 0,
+                       "Samples per pixel where a silhouette crosses the pixel (its corners see different shapes or "
+                       "the background), when more than --spp; 0 = off (render mode)"),
+        options_.edge_spp);
     add_parameter_option(app,
                          integer_option("--reference", 1, 256, nullptr,
                                         "Ground truth instead: N x N sub-pixel rays per pixel with unfiltered normals "
@@ -60,6 +67,9 @@ class RenderCommand : public Command {
     if (options_.reference > 0 && spp_option_->count() > 0)
       throw Error(ExitCode::bad_command_line,
                   "--spp and --reference exclude each other: the reference takes N x N samples per pixel");
+    if (options_.reference > 0 && edge_spp_option_->count() > 0)
+      throw Error(ExitCode::bad_command_line,
+                  "--edge-spp and --reference exclude each other: the reference takes N x N samples in every pixel");
     options_.output.check_writable();
   }
 
@@ -70,6 +80,7 @@ class RenderCommand : public Command {
     const Scene scene = load_scene(options_.scene);
     RenderSettings settings;
     settings.spp = options_.spp;
+    settings.edge_spp = options_.edge_spp;
     settings.reference = options_.reference;
     settings.seed = options_.seed;
     settings.max_probes = options_.max_probes;
@@ -98,13 +109,18 @@ class RenderCommand : public Command {
           {"seed", settings.seed},
           {"max_probes", settings.max_probes},
           {"max_parts", settings.max_parts},
+          {"edge_spp", settings.edge_spp},
           {"asset_folder", settings.reference > 0 ? nlohmann::json() : nlohmann::json(settings.asset_folder.string())},
           {"seconds", {{"load", load_seconds}, {"render", render_seconds}, {"write", write_seconds}}}};
       std::cout << report.dump(2) << "\n";
     } else if (!options_.run.quiet) {
-      std::printf("rendered %s: %ux%u, %s, %u sample%s per pixel, %.2f s\n", options_.output.path.c_str(), image.width,
-                  image.height, settings.reference > 0 ? "reference (unfiltered normals)" : "effects", samples,
-                  samples == 1 ? "" : "s", load_seconds + render_seconds + write_seconds);
+      const std::string at_silhouettes = settings.reference == 0 && settings.edge_spp > settings.spp
+                                             ? ", " + std::to_string(settings.edge_spp) + " at silhouettes"
+                                             : "";
+      std::printf("rendered %s: %ux%u, %s, %u sample%s per pixel%s, %.2f s\n", options_.output.path.c_str(),
+                  image.width, image.height, settings.reference > 0 ? "reference (unfiltered normals)" : "effects",
+                  samples, samples == 1 ? "" : "s", at_silhouettes.c_str(),
+                  load_seconds + render_seconds + write_seconds);
     }
     return 0;
   }
@@ -114,6 +130,7 @@ class RenderCommand : public Command {
     std::string scene;
     OutputOption output;
     uint32_t spp = 1;
+    uint32_t edge_spp = 0;
     uint32_t reference = 0;
     int max_probes = UvFootprint{}.max_probes;
     int max_parts = RenderSettings{}.max_parts;
@@ -123,6 +140,7 @@ class RenderCommand : public Command {
     RunOptions run;
   } options_;
   CLI::Option* spp_option_ = nullptr;
+  CLI::Option* edge_spp_option_ = nullptr;
 };
 
 }  // namespace

@@ -2,7 +2,7 @@
 # The glints example (issue 3): an infinite, non-repeating microstructure blended from two small example maps
 # (scratches with histogram-preserving blending on a plane, flakes with `none` on a bent quad) under two point
 # lights and a sky. Generates the examples, bakes ONLY their lut and rmq assets, renders the scene with the
-# glint P-NDF (the evaluator, 1 sample per pixel), with --reference (brute force over the infinite
+# glint P-NDF (the evaluator, 1 sample per pixel, 16 in the pixels a silhouette crosses: --edge-spp), with --reference (brute force over the infinite
 # microstructure: the exact point NDF of 16 x 16 rays per pixel) and with plain normal mapping (the same scene
 # without its effects), a second reference with another jitter seed (the reference's own noise floor), compares
 # each with the reference (per pixel, and the relative L1 of 8 x 8 pixel block means: `compare --block 8`) and
@@ -36,7 +36,7 @@ jq 'del(.materials[].effects)' "$scene" >"$plain"
 "$exe" gen flakes --size 512 --seed 1 -q -o "$maps/flakes512.png"
 "$exe" bake "$scene" --out-dir "$out/assets"
 "$exe" bake "$plain" --out-dir "$out/plain_assets"
-"$exe" render "$scene" --assets "$out/assets" -o "$out/glints.exr"
+"$exe" render "$scene" --assets "$out/assets" --edge-spp 16 -o "$out/glints.exr"
 "$exe" render "$scene" --reference 16 -o "$out/glints_reference.exr"
 "$exe" render "$scene" --reference 16 --seed 1 -o "$out/glints_reference_seed1.exr"
 "$exe" render "$plain" --assets "$out/plain_assets" -o "$out/glints_plain.exr"
@@ -63,7 +63,7 @@ for variant in plane quad light0 light1; do
   mkdir -p "$dir"
   jq "$pick | .camera.width /= 2 | .camera.height /= 2" "$scene" >"$dir/scene.json"
   "$exe" bake "$dir/scene.json" --out-dir "$dir/assets" -q
-  "$exe" render "$dir/scene.json" --assets "$dir/assets" -q -o "$dir/effect.exr"
+  "$exe" render "$dir/scene.json" --assets "$dir/assets" --edge-spp 16 -q -o "$dir/effect.exr"
   "$exe" render "$dir/scene.json" --reference 16 -q -o "$dir/reference.exr"
   "$exe" render "$dir/scene.json" --reference 16 --seed 1 -q -o "$dir/reference_seed1.exr"
   effect=$(block_l1 "$dir/effect.exr" "$dir/reference.exr")

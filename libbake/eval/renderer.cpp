@@ -9,6 +9,7 @@
 #include "libbake/eval/camera_rays.h"
 #include "libbake/eval/pixel_samples.h"
 #include "libbake/eval/sample_parts.h"
+#include "libbake/eval/silhouette_pixels.h"
 #include "libbake/eval/surface_frame.h"
 #include "libbake/scene/bake_plan.h"
 
@@ -93,22 +94,28 @@ Image render_scene(const Scene& scene, const RenderInputs& inputs, const RenderS
   image.channels = 3;
   image.pixels.assign(size_t(image.width) * image.height * 3, 0.0f);
   progress.start(settings.reference > 0 ? "reference" : "render", image.height);
+  // Edge-adaptive sampling (silhouette_pixels.h): pixels a silhouette crosses take edge_spp samples.
+  const bool edges = settings.reference == 0 && settings.edge_spp > grid.count();
+  const std::vector<uint8_t> edge = edges ? silhouette_pixels(scene, camera) : std::vector<uint8_t>();
+  const SampleGrid edge_grid = edges ? sample_grid(settings.edge_spp) : grid;
   parallel_for(0, image.height, [&](int64_t row) {
     const uint32_t y = uint32_t(row);
     for (uint32_t x = 0; x < image.width; ++x) {
       Vec3 sum = Vec3::Zero();
-      for (uint32_t s = 0; s < grid.count(); ++s) {
+      const SampleGrid& pixel_grid = edges && edge[size_t(y) * image.width + x] ? edge_grid : grid;
+      for (uint32_t s = 0; s < pixel_grid.count(); ++s) {
         if (settings.reference > 0) {
           const Vec2 o = sample_offset(x, y, s, grid, settings.seed);
           sum += sample_radiance(scene, shading, inputs.lighting, camera, Vec2(x + o.x(), y + o.y()), Vec2(1.0, 1.0), 1,
                                  1);
         } else {  // the cell's centre with the cell's footprint (see renderer.h)
-          const Vec2 o = cell_centre(s, grid);
+          const Vec2 o = cell_centre(s, pixel_grid);
           sum += sample_radiance(scene, shading, inputs.lighting, camera, Vec2(x + o.x(), y + o.y()),
-                                 Vec2(1.0 / grid.cols, 1.0 / grid.rows), settings.max_probes, settings.max_parts);
+                                 Vec2(1.0 / pixel_grid.cols, 1.0 / pixel_grid.rows), settings.max_probes,
+                                 settings.max_parts);
         }
       }
-      const Vec3 pixel = sum / double(grid.count());
+      const Vec3 pixel = sum / double(pixel_grid.count());
       for (uint32_t c = 0; c < 3; ++c) image.at(x, y, c) = float(pixel[c]);
     }
     progress.advance();

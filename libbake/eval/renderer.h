@@ -13,7 +13,9 @@
 //               convolved with itself: twice as wide; a jittered position moves the box off the pixel.) Each
 //               filtered lookup covers its footprint with up to `max_probes` anisotropic probes
 //               (uv_footprint.h), and a footprint much longer than wide is shaded in up to `max_parts` parts
-//               along its length (sample_parts.h);
+//               along its length (sample_parts.h). With `edge_spp` > spp, the pixels a silhouette crosses
+//               (their corners see different shapes, silhouette_pixels.h) take edge_spp samples instead: filtering
+//               covers texture, not coverage;
 //   reference   N x N rays per pixel, every effect's ground truth unfiltered (the baseline: bilinear in the
 //               raw map's level 0): the brute-force image every technique is compared with. No assets are
 //               read.
@@ -39,7 +41,8 @@ struct RenderSettings {
   uint32_t seed = 0;       // reference mode's sub-pixel jitter seed (pixel_samples.h); 0 is the default
   int max_probes = UvFootprint{}.max_probes;  // render mode: anisotropic probes per filtered lookup
   int max_parts = 4;                          // render mode: parts a long footprint is shaded in (sample_parts.h)
-  std::filesystem::path asset_folder;         // where effects' assets are; empty: default_asset_folder(scene)
+  uint32_t edge_spp = 0;  // render mode: samples of the pixels a silhouette crosses, when more than spp (0: off)
+  std::filesystem::path asset_folder;  // where effects' assets are; empty: default_asset_folder(scene)
 };
 
 // What a render reads from disk: projected distant lighting and each material's shader.

@@ -83,6 +83,7 @@ TEST_F(Determinism, EveryCommandWritesTheSameBytesWhateverTheThreadCount) {
       {"bake_colormap", {"bake", "colormap_scene.json", "--out-dir", "OUT"}, ""},
       {"render", {"render", "mip_scene.json", "-o", "OUT"}, ".exr"},
       {"render_png", {"render", "mip_scene.json", "-o", "OUT"}, ".png"},
+      {"render_edges", {"render", "mip_scene.json", "--edge-spp", "9", "-o", "OUT"}, ".exr"},
       {"render_reference", {"render", "mip_scene.json", "--reference", "2", "-o", "OUT"}, ".exr"},
   };
   for (const Producer& p : producers) {

@@ -18,12 +18,14 @@ inline void bake_scene(const Scene& scene) {
 }
 
 // spp samples per pixel, or (reference > 0) the reference with reference x reference rays per pixel; `seed`
-// picks the sub-pixel jitter.
-inline Image render(const Scene& scene, uint32_t spp, uint32_t reference = 0, uint32_t seed = 0) {
+// picks the sub-pixel jitter; edge_spp > spp gives the pixels a silhouette crosses that many samples.
+inline Image render(const Scene& scene, uint32_t spp, uint32_t reference = 0, uint32_t seed = 0,
+                    uint32_t edge_spp = 0) {
   RenderSettings settings;
   settings.spp = spp;
   settings.reference = reference;
   settings.seed = seed;
+  settings.edge_spp = edge_spp;
   return render_scene(scene, load_render_inputs(scene, settings), settings, Progress::silent());
 }
 
