@@ -109,6 +109,9 @@ double vmf_cos_from_uniform(double kappa, double u) {
   return std::clamp(1.0 + std::log1p(u * std::expm1(-2.0 * kappa)) / kappa, -1.0, 1.0);
 }
 
+// Below this kappa (or below L^2 / 2) the band factors come from the backward recurrence (vmf_band_factors).
+constexpr double kForwardBandFactorsMinKappa = 8.0;
+
 void vmf_band_factors(double kappa, std::span<double> out) {
   if (out.empty()) return;
   const int order = int(out.size()) - 1;
@@ -138,6 +141,20 @@ void vmf_band_factors(double kappa, std::span<double> out) {
       const double ll = double(l) * (l + 1);
       out[size_t(l)] = std::exp(-ll / (2.0 * kappa) - ll / (4.0 * kappa * kappa));
     }
+    return;
+  }
+  if (kappa >= kForwardBandFactorsMinKappa && kappa >= 0.5 * order * order) {
+    // Forward from the closed forms of the half-integer Bessel functions: Lambda_1 = coth k - 1/k (A(k)), and
+    // I_{nu-1} - I_{nu+1} = (2 nu / k) I_nu gives Lambda_{l+1} = Lambda_{l-1} - (2l + 1) / k Lambda_l. I_nu is the
+    // recurrence's minimal solution, so forward steps are unstable in general; but for l <= sqrt(2k) the dominant
+    // solution K_nu is ~e^-2k smaller relative to I_nu and each step subtracts less than it keeps, so the error
+    // stays at rounding: against the backward recurrence within 4e-15 for k >= max(8, L^2 / 2), L <= 128, up to
+    // the asymptotic switch (and within 1.1e-14 to 1e7, where the backward recurrence's ~6 sqrt(k) steps carry
+    // their own rounding). It costs L steps where the backward one costs ~6 sqrt(k) divisions: up to ~1100 per call
+    // for the kappa of a sharp lobe, a quarter of a vmf render's time before. Tests:
+    // VmfLobe.BandFactorsMatchQuadrature, VmfLobe.BandFactorsBranchesAgreeWhereTheySwitch.
+    out[1] = 1.0 / std::tanh(kappa) - 1.0 / kappa;
+    for (int l = 1; l < order; ++l) out[size_t(l) + 1] = out[size_t(l) - 1] - (2.0 * l + 1.0) / kappa * out[size_t(l)];
     return;
   }
   // Backward recurrence rho_l = k / ((2l + 1) + k rho_{l+1}), started at N from Amos's estimate

@@ -3,9 +3,11 @@
 // a density that integrates to 1 without overflow, and the Bessel-ratio band factors against quadrature.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <vector>
 
 #include "formats/error.h"
 #include "libbake/core/gauss_legendre.h"
@@ -122,7 +124,9 @@ TEST(VmfLobe, LogDensityIntegratesToOneWithoutOverflow) {
 // Lambda_l = 2 pi integral g(t) P_l(t) dt (Funk-Hecke), by quadrature where the lobe lives.
 TEST(VmfLobe, BandFactorsMatchQuadrature) {
   constexpr int L = 24;
-  for (double k : {1e-3, 0.5, 2.0, 10.0, 100.0, 1000.0, 2e4, 1e6}) {  // 1e6: the asymptotic branch
+  // 10 and 1000: forward recurrence (kappa >= max(8, L^2 / 2) = 288 for l <= 24 at 1000; 10 is below it, backward);
+  // 0.5, 2, 100: backward; 1e6: the asymptotic branch.
+  for (double k : {1e-3, 0.5, 2.0, 10.0, 100.0, 288.0, 1000.0, 2e4, 1e6}) {
     std::vector<double> lambda(L + 1);
     vmf_band_factors(k, lambda);
     const double width = std::min(2.0, 80.0 / k);
@@ -143,6 +147,19 @@ TEST(VmfLobe, BandFactorsMatchQuadrature) {
     }
     EXPECT_NEAR(lambda[1], vmf_mean_length(k), 1e-14);
     EXPECT_NEAR(lambda[2], 1.0 - 3.0 * vmf_mean_length(k) / k, 1e-12);
+  }
+}
+
+// The forward recurrence takes over from the backward one at kappa = max(8, L^2 / 2): the two agree there to
+// rounding, for low and high orders (measured up to 4e-15 relative over L <= 128).
+TEST(VmfLobe, BandFactorsBranchesAgreeWhereTheySwitch) {
+  for (const int order : {1, 2, 3, 4, 8, 16, 32, 64, 128}) {
+    const double at = std::max(8.0, 0.5 * order * order);
+    std::vector<double> below(size_t(order) + 1), above(size_t(order) + 1);
+    vmf_band_factors(std::nextafter(at, 0.0), below);
+    vmf_band_factors(at, above);
+    for (int l = 0; l <= order; ++l)
+      EXPECT_NEAR(above[size_t(l)] / below[size_t(l)], 1.0, 2e-14) << "order " << order << " l " << l;
   }
 }
 
