@@ -60,11 +60,12 @@ std::vector<VmfLobeShape> merge_vmf_lobes(std::span<const WeightedVmfLobe> candi
     size_t best = alpha.size(), best_compatible = alpha.size();
     double best_cost = INFINITY, best_compatible_cost = INFINITY;
     for (size_t c = 0; c < alpha.size(); ++c) {
-      const double reach = dk.spread + directions[c].spread + kVmfMergeFloor;  // angle(mu_c, mu_k) <= reach
-      const bool compatible = reach >= std::numbers::pi || dk.mu.dot(directions[c].mu) >= std::cos(reach);
       const double added = cost(c);
       if (added < best_cost) best_cost = added, best = c;
-      if (compatible && added < best_compatible_cost) best_compatible_cost = added, best_compatible = c;
+      if (!(added < best_compatible_cost)) continue;  // compatible or not, c is not the best compatible lobe
+      const double reach = dk.spread + directions[c].spread + kVmfMergeFloor;  // angle(mu_c, mu_k) <= reach
+      if (reach >= std::numbers::pi || dk.mu.dot(directions[c].mu) >= std::cos(reach))
+        best_compatible_cost = added, best_compatible = c;
     }
     // The heaviest texel's own lobes are the fit's separate components: each keeps a lobe of its own.
     size_t into = k.group == first_group ? alpha.size() : best_compatible;
