@@ -47,29 +47,28 @@ class VmfCommand : public NormalMapBakingCommand {
   void bake(Progress& progress) override {
     options_ = vmf_bake_options(parameters());
     const Image* material = material_ ? &*material_ : nullptr;
-    pyramid_ = build_vmf_pyramid(map().map, material, options_, progress);
-    asset_ = vmf_asset_writer(map(), material ? &material_record_ : nullptr, pyramid_, options_);
+    VmfPyramid pyramid = build_vmf_pyramid(map().map, material, options_, progress);
+    std::ostringstream s;
+    s << std::setprecision(3) << map_size() << ", " << pyramid.levels.size() << " levels, " << pyramid.lobes
+      << " lobes per texel, align " << options_.em.align;
+    if (pyramid.feature_count) s << ", " << pyramid.feature_count << " feature channels";
+    if (pyramid.levels.size() > 1) {
+      double iterations = 0.0;
+      for (size_t k = 1; k < pyramid.levels.size(); ++k) iterations += pyramid.levels[k].statistics.mean_iterations;
+      s << ", mean EM iterations " << iterations / double(pyramid.levels.size() - 1);
+    }
+    summary_ = s.str();
+    // The pyramid's levels move into the writer (no second copy of the asset's bytes in memory).
+    asset_ = vmf_asset_writer(map(), material ? &material_record_ : nullptr, std::move(pyramid), options_);
   }
 
-  std::string summary() const override {
-    std::ostringstream s;
-    s << std::setprecision(3) << map_size() << ", " << pyramid_.levels.size() << " levels, " << pyramid_.lobes
-      << " lobes per texel, align " << options_.em.align;
-    if (pyramid_.feature_count) s << ", " << pyramid_.feature_count << " feature channels";
-    if (pyramid_.levels.size() > 1) {
-      double iterations = 0.0;
-      for (size_t k = 1; k < pyramid_.levels.size(); ++k) iterations += pyramid_.levels[k].statistics.mean_iterations;
-      s << ", mean EM iterations " << iterations / double(pyramid_.levels.size() - 1);
-    }
-    s << ", " << asset_->file_size() << " bytes";
-    return s.str();
-  }
+  std::string summary() const override { return summary_ + ", " + std::to_string(asset_->file_size()) + " bytes"; }
 
   std::string material_path_;
   std::optional<Image> material_;
   nlohmann::json material_record_;
   VmfBakeOptions options_;
-  VmfPyramid pyramid_;
+  std::string summary_;  // what the bake found, without the file size
 };
 
 }  // namespace

@@ -3,8 +3,8 @@
 
 namespace mbk {
 
-AssetWriter vmf_asset_writer(const LoadedNormalMap& input, const nlohmann::json* material_record,
-                             const VmfPyramid& pyramid, const VmfBakeOptions& options) {
+AssetWriter vmf_asset_writer(const LoadedNormalMap& input, const nlohmann::json* material_record, VmfPyramid pyramid,
+                             const VmfBakeOptions& options) {
   const NormalMap& map = input.map;
   nlohmann::json metadata;
   metadata["inputs"] = nlohmann::json::array({input.record.to_json()});
@@ -44,10 +44,10 @@ AssetWriter vmf_asset_writer(const LoadedNormalMap& input, const nlohmann::json*
                             {"reseeded_lobes_per_texel_per_level", reseeds}};
   AssetWriter writer("vmf", std::move(metadata));
   const uint64_t J = uint64_t(pyramid.lobes), F = uint64_t(pyramid.feature_count);
-  for (size_t k = 0; k < pyramid.levels.size(); ++k) {
-    const VmfLevel& level = pyramid.levels[k];
-    writer.add("level_" + std::to_string(k), {level.height, level.width, J, 4}, level.lobes);
-    if (F) writer.add("features_" + std::to_string(k), {level.height, level.width, J, F}, level.features);
+  for (size_t k = 0; k < pyramid.levels.size(); ++k) {  // the levels' data moved in, not copied: no second pyramid
+    VmfLevel& level = pyramid.levels[k];
+    writer.add("level_" + std::to_string(k), {level.height, level.width, J, 4}, std::move(level.lobes));
+    if (F) writer.add("features_" + std::to_string(k), {level.height, level.width, J, F}, std::move(level.features));
   }
   return writer;
 }

@@ -13,7 +13,7 @@ namespace mbk {
 // statistics per level: mean EM iterations (all runs: both starts and the guard), converged fraction, the mean
 // log-likelihood per finest normal of the stored lobes, empty-lobe fraction, and re-seeds kept by the collapse guard
 // per texel.
-AssetWriter vmf_asset_writer(const LoadedNormalMap& input, const nlohmann::json* material_record,
-                             const VmfPyramid& pyramid, const VmfBakeOptions& options);
+AssetWriter vmf_asset_writer(const LoadedNormalMap& input, const nlohmann::json* material_record, VmfPyramid pyramid,
+                             const VmfBakeOptions& options);
 
 }  // namespace mbk
