@@ -134,9 +134,9 @@ void vmf_band_factors(double kappa, std::span<double> out) {
     //     | Lambda_l(k) = exp(-l (l + 1) / (2k) - l (l + 1) / (4 k^2))  |
     //     +-------------------------------------------------------------+
     // with a relative error ~ l^4 / (24 k^3): against 40-digit Bessel ratios (mpmath) 4.6e-14 at l = 32, k = 1e6,
-    // and 7.8e-14 at the switch for order 32 (k = 8.4e5), where it is largest; there the recurrence, which would
-    // need ~6 sqrt(k) steps (6000 at the usual kappa_max 1e6), has gathered ~1e-12 of rounding. Tests:
-    // VmfLobe.BandFactorsMatchQuadrature (both branches), VmfLobe.BandFactorsLimitsAndAsymptoticSwitch.
+    // and 7.8e-14 at the switch for order 32 (k = 8.4e5), where it is largest; there it agrees with the forward
+    // recurrence below to 8e-14 (orders 8-128). Tests: VmfLobe.BandFactorsMatchQuadrature (every branch),
+    // VmfLobe.BandFactorsLimitsAndAsymptoticSwitch.
     for (int l = 1; l <= order; ++l) {
       const double ll = double(l) * (l + 1);
       out[size_t(l)] = std::exp(-ll / (2.0 * kappa) - ll / (4.0 * kappa * kappa));

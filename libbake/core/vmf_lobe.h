@@ -13,8 +13,9 @@
 //     Lambda_l(kappa) = I_{l+1/2}(kappa) / I_{1/2}(kappa)
 // (modified Bessel functions of the first kind). [Han07] Eq. (7.19) approximates it by exp(-l^2 / (2 kappa)),
 // which is far off for small kappa (Lambda_1(1) = 0.313 vs 0.607). Deviation [Han07]: we use the exact
-// ratio, by backward recurrence on rho_l = I_{l+1/2} / I_{l-1/2} = kappa / ((2l + 1) + kappa rho_{l+1})
-// (test: VmfLobe.BandFactorsMatchQuadrature).
+// ratio: by backward recurrence on rho_l = I_{l+1/2} / I_{l-1/2} = kappa / ((2l + 1) + kappa rho_{l+1}) for small
+// kappa, forward from Lambda_1 = coth(kappa) - 1/kappa where kappa >= max(8, L^2 / 2), and by Hankel's expansion
+// for very large kappa (vmf_lobe.cpp; test: VmfLobe.BandFactorsMatchQuadrature).
 #pragma once
 
 #include <span>

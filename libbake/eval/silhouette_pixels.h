@@ -4,7 +4,9 @@
 // bent quad: one silhouette pixel made its 8 x 8-block error 5x the reference's noise floor). The renderer gives
 // such pixels more samples. Which pixels: the primary rays through the image's (W + 1) x (H + 1) pixel corners are
 // cast once; a pixel whose four corners do not all see the same shape (or all the background) is an edge pixel.
-// A feature thinner than a pixel that passes between all four corners is missed, as any point sampling misses it.
+// A feature thinner than a pixel that passes between all four corners is missed, as any point sampling misses it;
+// corners are told apart by shape only, so where a shape hides part of itself (a bent quad folded past 180
+// degrees) its own silhouette is not an edge.
 #pragma once
 
 #include <cstdint>
