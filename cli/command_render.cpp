@@ -114,9 +114,8 @@ class RenderCommand : public Command {
           {"seconds", {{"load", load_seconds}, {"render", render_seconds}, {"write", write_seconds}}}};
       std::cout << report.dump(2) << "\n";
     } else if (!options_.run.quiet) {
-      const std::string at_silhouettes = settings.reference == 0 && settings.edge_spp > settings.spp
-                                             ? ", " + std::to_string(settings.edge_spp) + " at silhouettes"
-                                             : "";
+      const std::string at_silhouettes =
+          settings.edge_sampling() ? ", " + std::to_string(settings.edge_spp) + " at silhouettes" : "";
       std::printf("rendered %s: %ux%u, %s, %u sample%s per pixel%s, %.2f s\n", options_.output.path.c_str(),
                   image.width, image.height, settings.reference > 0 ? "reference (unfiltered normals)" : "effects",
                   samples, samples == 1 ? "" : "s", at_silhouettes.c_str(),

@@ -95,7 +95,7 @@ Image render_scene(const Scene& scene, const RenderInputs& inputs, const RenderS
   image.pixels.assign(size_t(image.width) * image.height * 3, 0.0f);
   progress.start(settings.reference > 0 ? "reference" : "render", image.height);
   // Edge-adaptive sampling (silhouette_pixels.h): pixels a silhouette crosses take edge_spp samples.
-  const bool edges = settings.reference == 0 && settings.edge_spp > grid.count();
+  const bool edges = settings.edge_sampling();
   const std::vector<uint8_t> edge = edges ? silhouette_pixels(scene, camera) : std::vector<uint8_t>();
   const SampleGrid edge_grid = edges ? sample_grid(settings.edge_spp) : grid;
   parallel_for(0, image.height, [&](int64_t row) {

@@ -43,6 +43,9 @@ struct RenderSettings {
   int max_parts = 4;                          // render mode: parts a long footprint is shaded in (sample_parts.h)
   uint32_t edge_spp = 0;  // render mode: samples of the pixels a silhouette crosses, when more than spp (0: off)
   std::filesystem::path asset_folder;  // where effects' assets are; empty: default_asset_folder(scene)
+
+  // Whether the pixels a silhouette crosses take edge_spp samples (render mode, edge_spp more than spp).
+  bool edge_sampling() const { return reference == 0 && edge_spp > spp; }
 };
 
 // What a render reads from disk: projected distant lighting and each material's shader.
