@@ -108,8 +108,21 @@ std::vector<VmfLobeShape> VmfTexture::lookup(const Vec2& uv, double lod, std::ve
 
 std::vector<VmfLobeShape> VmfTexture::lookup(const FootprintProbes& probes, std::vector<double>* features) const {
   const size_t J = size_t(lobes_), F = size_t(features_);
-  bool all_finite = probes.size() > 0, finest = false;
+  // Each probe of a box width w is read as its quarters (see the header): 2 x 2 trilinear lookups of width w / 2
+  // at +-w / 4 along the texel axes, one level finer. A probe of no finite width is read as it is.
+  std::vector<FootprintProbe> reads;
   for (const FootprintProbe& p : probes) {
+    if (!(p.width > 0.0) || !std::isfinite(p.width)) {
+      reads.push_back(p);
+      continue;
+    }
+    const Vec2 step(0.25 * p.width / widths_[0], 0.25 * p.width / heights_[0]);
+    for (const double dy : {-1.0, 1.0})
+      for (const double dx : {-1.0, 1.0})
+        reads.push_back({p.uv + Vec2(dx * step.x(), dy * step.y()), std::max(0.0, p.lod - 1.0), 0.5 * p.width});
+  }
+  bool all_finite = !reads.empty(), finest = false;
+  for (const FootprintProbe& p : reads) {
     all_finite = all_finite && finite(p.uv, p.lod);
     finest = finest || (finite(p.uv, p.lod) && level_blend(levels(), p.lod).fine == 0);
   }
@@ -118,28 +131,28 @@ std::vector<VmfLobeShape> VmfTexture::lookup(const FootprintProbes& probes, std:
     if (features) features->assign(slots * F, 0.0);
     return std::vector<VmfLobeShape>(slots);
   }
-  // The texels of levels >= 1 the probes read, with their summed trilinear weights (probes of one footprint share
-  // most of their coarse texels); below LOD 1, level 0's part of each probe goes to slot J.
+  // The texels of levels >= 1 the reads touch, with their summed trilinear weights (neighbouring reads share most
+  // of their coarse texels), and each read's level-0 part as one delta: [alpha, alpha n, alpha y].
   struct TexelWeight {
     size_t level, texel;
     double weight;
   };
   std::vector<TexelWeight> texels;
-  std::vector<double> level0_slot(4 + F, 0.0), level0(4), level0_features(F);
-  for (const FootprintProbe& p : probes) {
+  std::vector<double> deltas;
+  const size_t delta_size = 4 + F;
+  for (const FootprintProbe& p : reads) {
     const LevelBlend b = level_blend(levels(), p.lod);
-    std::fill(level0.begin(), level0.end(), 0.0);
-    std::fill(level0_features.begin(), level0_features.end(), 0.0);
+    std::vector<double> delta(delta_size, 0.0);
     for (const auto& [level, blend] : {std::pair{b.fine, 1.0 - b.t}, std::pair{b.coarse, b.t}}) {
       if (blend == 0.0) continue;
-      const double weight = blend / probes.size();
+      const double weight = blend / double(reads.size());
       const uint32_t w = widths_[level];
       for (const TextureTap& tap : bilinear_taps(w, heights_[level], p.uv)) {
         const size_t texel = size_t(tap.row) * w + tap.x;
         if (level == 0) {
-          for (size_t q = 0; q < J * 4; ++q) level0[q % 4] += weight * tap.weight * levels_[0][texel * J * 4 + q];
+          for (size_t q = 0; q < J * 4; ++q) delta[q % 4] += weight * tap.weight * levels_[0][texel * J * 4 + q];
           for (size_t q = 0; q < J * F; ++q)
-            level0_features[q % F] += weight * tap.weight * feature_levels_[0][texel * J * F + q];
+            delta[4 + q % F] += weight * tap.weight * feature_levels_[0][texel * J * F + q];
           continue;
         }
         const auto same = [&](const TexelWeight& t) { return t.level == level && t.texel == texel; };
@@ -149,21 +162,20 @@ std::vector<VmfLobeShape> VmfTexture::lookup(const FootprintProbes& probes, std:
           texels.push_back({level, texel, weight * tap.weight});
       }
     }
+    if (!(delta[0] > 0.0)) continue;
     // Level 0 holds one lobe (1, n) per texel, in whichever slot the coherence pass chose. Blending the taps
     // per slot (Alg. 7.2) would shade two or more lobes between unequal neighbours, or one whose |r| < 1 reads
     // as a spread; plain normal mapping and the reference shade the renormalised interpolated normal. So a
-    // probe's level-0 part is one delta: alpha = its weight, r = the interpolated normal rescaled to length
-    // alpha (kappa_max); the deltas of several probes then add up to slot J, whose |r| < alpha is the spread
-    // between them. Deviation [Han07]: Alg. 7.2 blends level 0 like any other level (test:
+    // read's level-0 part is one delta: alpha = its weight, r = the interpolated normal rescaled to length alpha
+    // (kappa_max). Deviation [Han07]: Alg. 7.2 blends level 0 like any other level (test:
     // FilteredNdfEffects.MagnifiedBumpyMapMatchesPlainNormalMapping).
-    const double len = std::sqrt(level0[1] * level0[1] + level0[2] * level0[2] + level0[3] * level0[3]);
-    if (len > 1e-6 * level0[0])
-      for (int a = 1; a <= 3; ++a) level0[size_t(a)] *= level0[0] / len;
-    for (size_t a = 0; a < 4; ++a) level0_slot[a] += level0[a];
-    for (size_t f = 0; f < F; ++f) level0_slot[4 + f] += level0_features[f];
+    const double len = std::sqrt(delta[1] * delta[1] + delta[2] * delta[2] + delta[3] * delta[3]);
+    if (len > 1e-6 * delta[0])
+      for (int a = 1; a <= 3; ++a) delta[size_t(a)] *= delta[0] / len;
+    deltas.insert(deltas.end(), delta.begin(), delta.end());
   }
-  // Levels >= 1: every texel's lobes, merged by direction (vmf_lobe_merge.h; deviation [Han07]: Alg. 7.2 blends
-  // slot by slot).
+  // Every texel's lobes and every delta, merged by direction (vmf_lobe_merge.h; deviation [Han07]: Alg. 7.2
+  // blends slot by slot).
   std::vector<double> scaled_features(texels.size() * J * F);
   std::vector<WeightedVmfLobe> candidates;
   for (size_t t = 0; t < texels.size(); ++t) {
@@ -176,13 +188,12 @@ std::vector<VmfLobeShape> VmfTexture::lookup(const FootprintProbes& probes, std:
       candidates.push_back({tw.weight * lobe[0], tw.weight * Vec3(lobe[1], lobe[2], lobe[3]), std::span(y, F), t});
     }
   }
-  std::vector<double> alpha_y;
-  std::vector<VmfLobeShape> lobes = merge_vmf_lobes(candidates, J, kappa_max_, F, features ? &alpha_y : nullptr);
-  if (finest) {
-    lobes.push_back(
-        vmf_lobe_from_premultiplied(level0_slot[0], Vec3(level0_slot[1], level0_slot[2], level0_slot[3]), kappa_max_));
-    alpha_y.insert(alpha_y.end(), level0_slot.begin() + 4, level0_slot.end());
+  for (size_t d = 0; d * delta_size < deltas.size(); ++d) {
+    const double* delta = &deltas[d * delta_size];
+    candidates.push_back({delta[0], Vec3(delta[1], delta[2], delta[3]), std::span(delta + 4, F), texels.size() + d});
   }
+  std::vector<double> alpha_y;
+  std::vector<VmfLobeShape> lobes = merge_vmf_lobes(candidates, slots, kappa_max_, F, features ? &alpha_y : nullptr);
   if (features) {
     features->assign(slots * F, 0.0);
     for (size_t j = 0; j < slots; ++j)

@@ -112,13 +112,21 @@ TEST(FilteredNdfEffects, MagnifiedBumpyMapMatchesPlainNormalMapping) {
   };
   // Toksvig: the same normal and, with |n| = 1, no widening: the same image up to float rounding.
   EXPECT_LT(rmse("toksvig"), 1e-4 * mean(plain));
-  // sh: what is left is the truncation of D at order 24; vmf: kappa_max's widening and the diffuse series.
-  // Measured: sh24 0.31%, vmf2 0.016% of the mean.
+  // sh: what is left is the truncation of D at order 24. vmf reads each footprint at four points (its quarters,
+  // filtered_ndf_textures.h), so it shades the small spread of the interpolated normals a 0.2-texel footprint
+  // covers, which plain normal mapping does not: it must stay close to mip and be no farther from the reference.
+  // Measured: sh24 0.31%, vmf2 0.51% of the mean; against a 16 x 16 reference vmf2 0.00081, mip 0.00134.
   const double sh = rmse({{"name", "sh"}, {"order", 24}, {"precision", "f32"}}),
                vmf = rmse({{"name", "vmf"}, {"lobes", 2}});
   std::cout << "magnified bumpy map, rmse vs mip: sh24 " << sh << ", vmf2 " << vmf << " (mean " << mean(plain) << ")\n";
   EXPECT_LT(sh, 0.005 * mean(plain));
-  EXPECT_LT(vmf, 0.001 * mean(plain));
+  EXPECT_LT(vmf, 0.01 * mean(plain));
+  const Image reference = render_with(dir, magnified("mip", specular), 16);
+  const double vmf_to_reference =
+      compare_images(render_with(dir, magnified({{"name", "vmf"}, {"lobes", 2}}, specular)), reference).rmse;
+  const double mip_to_reference = compare_images(plain, reference).rmse;
+  std::cout << "against the reference: vmf2 " << vmf_to_reference << ", mip " << mip_to_reference << "\n";
+  EXPECT_LE(vmf_to_reference, mip_to_reference);
 }
 
 TEST(FilteredNdfEffects, FinestLevelEqualsPlainNormalMapping_EnvironmentLight) {

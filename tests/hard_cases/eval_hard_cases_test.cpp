@@ -78,11 +78,11 @@ void expect_texel_values(double side) {
     for (int k = 0, lm = 0; k <= kOrder; ++k)
       for (int m = -k; m <= k; ++m, ++lm) EXPECT_NEAR(g[size_t(lm)], test::independent_sh(k, m, n), 1e-6) << k << m;
     const std::vector<VmfLobeShape> lobes = l.vmf.lookup(uv, lod);
-    ASSERT_EQ(lobes.size(), size_t(kLobes) + 1);  // below LOD 1: the level-0 lobe last
-    for (int j = 0; j < kLobes; ++j) EXPECT_EQ(lobes[size_t(j)].alpha, 0.0);
-    EXPECT_EQ(lobes.back().alpha, 1.0);
-    EXPECT_EQ(lobes.back().kappa, kVmfKappaMax);
-    EXPECT_LT((lobes.back().mu - n.normalized()).norm(), 1e-6);
+    ASSERT_EQ(lobes.size(), size_t(kLobes) + 1);  // below LOD 1: J + 1 lobes, level 0's delta the only one here
+    EXPECT_EQ(lobes.front().alpha, 1.0);
+    EXPECT_EQ(lobes.front().kappa, kVmfKappaMax);
+    EXPECT_LT((lobes.front().mu - n.normalized()).norm(), 1e-6);
+    for (size_t j = 1; j < lobes.size(); ++j) EXPECT_EQ(lobes[j].alpha, 0.0);
     const FootprintMoments m = sample_moments(l.moments, uv, lod);
     EXPECT_NEAR(m.mean, n.x(), 1e-7);
     EXPECT_NEAR(m.variance, 0.0, 1e-7);
