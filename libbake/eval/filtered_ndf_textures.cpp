@@ -109,20 +109,27 @@ std::vector<VmfLobeShape> VmfTexture::lookup(const Vec2& uv, double lod, std::ve
 std::vector<VmfLobeShape> VmfTexture::lookup(const FootprintProbes& probes, std::vector<double>* features) const {
   const size_t J = size_t(lobes_), F = size_t(features_);
   // Each probe of a box width w is read as its quarters (see the header): 2 x 2 trilinear lookups of width w / 2
-  // at +-w / 4 along the texel axes, one level finer. A probe of no finite width is read as it is.
-  std::vector<FootprintProbe> reads;
+  // at +-w / 4 along the texel axes, one level finer, each with a quarter of the probe's weight. A probe of no
+  // finite width, or not finite itself, is read as it is.
+  struct Read {
+    FootprintProbe at;
+    double weight;
+  };
+  std::vector<Read> reads;
+  const double probe_weight = 1.0 / double(probes.size());
   for (const FootprintProbe& p : probes) {
-    if (!(p.width > 0.0) || !std::isfinite(p.width)) {
-      reads.push_back(p);
+    if (!(p.width > 0.0) || !std::isfinite(p.width) || !finite(p.uv, p.lod)) {
+      reads.push_back({p, probe_weight});
       continue;
     }
     const Vec2 step(0.25 * p.width / widths_[0], 0.25 * p.width / heights_[0]);
     for (const double dy : {-1.0, 1.0})
       for (const double dx : {-1.0, 1.0})
-        reads.push_back({p.uv + Vec2(dx * step.x(), dy * step.y()), std::max(0.0, p.lod - 1.0), 0.5 * p.width});
+        reads.push_back({{p.uv + Vec2(dx * step.x(), dy * step.y()), std::max(0.0, p.lod - 1.0), 0.5 * p.width},
+                         0.25 * probe_weight});
   }
   bool all_finite = !reads.empty(), finest = false;
-  for (const FootprintProbe& p : reads) {
+  for (const auto& [p, weight] : reads) {
     all_finite = all_finite && finite(p.uv, p.lod);
     finest = finest || (finite(p.uv, p.lod) && level_blend(levels(), p.lod).fine == 0);
   }
@@ -140,12 +147,12 @@ std::vector<VmfLobeShape> VmfTexture::lookup(const FootprintProbes& probes, std:
   std::vector<TexelWeight> texels;
   std::vector<double> deltas;
   const size_t delta_size = 4 + F;
-  for (const FootprintProbe& p : reads) {
+  for (const auto& [p, read_weight] : reads) {
     const LevelBlend b = level_blend(levels(), p.lod);
     std::vector<double> delta(delta_size, 0.0);
     for (const auto& [level, blend] : {std::pair{b.fine, 1.0 - b.t}, std::pair{b.coarse, b.t}}) {
       if (blend == 0.0) continue;
-      const double weight = blend / double(reads.size());
+      const double weight = blend * read_weight;
       const uint32_t w = widths_[level];
       for (const TextureTap& tap : bilinear_taps(w, heights_[level], p.uv)) {
         const size_t texel = size_t(tap.row) * w + tap.x;

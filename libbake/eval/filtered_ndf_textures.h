@@ -14,8 +14,9 @@
 // renormalised interpolated normal, as plain normal mapping shades it. Deviation [Han07]: Alg. 7.2 blends level 0
 // per slot like any other level.
 // A footprint probe of box width w is read as its quarters: 2 x 2 trilinear reads of width w / 2 at +-w / 4
-// along the texel axes, one level finer (the four boxes tile the probe's box, and their kernels' variance is the
-// box's, w^2 / 12). Where a probe's level is below 1 this samples the interpolated normal field at four points of
+// along the texel axes, one level finer (the four boxes tile the probe's box; from a probe's level 1 up their
+// kernels' variance is the box's, w^2 / 12, below it the quarters' level is clamped at 0). Where a probe's level
+// is below 1 this samples the interpolated normal field at four points of
 // the box rather than one, so the deltas' spread is the field's spread over the footprint (the reference's NDF
 // there), not nothing; where it is coarser, each read's trilinear tent reaches ~2.2 w instead of ~3.5 w, so a
 // neighbour's sparkle leaks less into the pixel. Measured on the filtering report (4 spp against a 16 x 16
@@ -78,7 +79,7 @@ class VmfTexture {
   // (already divided by the interpolated alpha; 0 for an empty slot). NaN uv or lod give J empty lobes.
   std::vector<VmfLobeShape> lookup(const Vec2& uv, double lod, std::vector<double>* features = nullptr) const;
   // The same over an anisotropic footprint: every probe read as its quarters (above), their lobes merged, so still
-  // J (+ 1 where a read reaches level 0) lobes. Any non-finite probe gives J empty lobes.
+  // J lobes, + 1 where a read reaches level 0 (a probe below LOD 2). Any non-finite probe gives J empty lobes.
   std::vector<VmfLobeShape> lookup(const FootprintProbes& probes, std::vector<double>* features = nullptr) const;
 
  private:

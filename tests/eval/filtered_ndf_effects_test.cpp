@@ -1,6 +1,7 @@
 // The filtered-NDF effects at render time (libbake/eval/sh_effect.h, vmf_effect.h, toksvig_effect.h; [Han07]):
 // - at the finest level (a magnified plane) sh, vmf and toksvig shade like plain normal mapping (the `mip`
-//   effect), on a smooth map and on a bumpy one;
+//   effect), on a smooth map and on a bumpy one (vmf within 1%: it also shades the small spread of the normals a
+//   magnified footprint covers, and is closer to the reference for it);
 // - on a plane receding to the horizon they are closer to the brute-force reference than plain mip, because
 //   the NDF under a large footprint is wide and mip's renormalised mean normal forgets it;
 // - where normals cancel (a V-groove seen from afar) every effect stays finite (the kMaxFilteredAlpha cap);
@@ -126,7 +127,7 @@ TEST(FilteredNdfEffects, MagnifiedBumpyMapMatchesPlainNormalMapping) {
       compare_images(render_with(dir, magnified({{"name", "vmf"}, {"lobes", 2}}, specular)), reference).rmse;
   const double mip_to_reference = compare_images(plain, reference).rmse;
   std::cout << "against the reference: vmf2 " << vmf_to_reference << ", mip " << mip_to_reference << "\n";
-  EXPECT_LE(vmf_to_reference, mip_to_reference);
+  EXPECT_LT(vmf_to_reference, 0.8 * mip_to_reference);
 }
 
 TEST(FilteredNdfEffects, FinestLevelEqualsPlainNormalMapping_EnvironmentLight) {

@@ -196,6 +196,35 @@ TEST(VmfTexture, FootprintsReadTheSpreadOfTheNormalsTheyCover) {
   }
 }
 
+TEST(VmfTexture, AFootprintAcrossAnEdgeKeepsBothNormalsAsAtoms) {
+  // Two flat halves meeting at a sharp edge (columns 0-7 normal a, 8-15 normal b). A footprint of 3 texels centred
+  // on the edge is read at four points, two on each side, where the interpolated normal is exactly a or b: each
+  // read's delta joins the merge by direction, so the lookup holds two atoms (kappa_max) of weight 1/2, not one
+  // lobe at normalize(a + b) whose spread stands for the two (what summing the reads' deltas into one lobe gave).
+  constexpr uint32_t kSize = 16;
+  const Vec3 a = Vec3(0.5, 0.0, 1.0).normalized(), b = Vec3(-0.4, 0.2, 1.0).normalized();
+  NormalMap map;
+  map.width = map.height = kSize;
+  for (uint32_t row = 0; row < kSize; ++row)
+    for (uint32_t x = 0; x < kSize; ++x) map.texels.push_back((x < kSize / 2 ? a : b).cast<float>());
+  VmfBakeOptions options{2, {}};
+  const VmfPyramid p = build_vmf_pyramid(map, nullptr, options, Progress::silent());
+  const VmfTexture t = VmfTexture::from_asset(
+      Asset::parse(vmf_asset_writer(test::loaded_map(map), nullptr, p, options).serialize(), "vmf"));
+  FootprintProbes probe;
+  const double width = 3.0;
+  probe.push_back({Vec2(0.5, 0.37), std::max(0.0, std::log2(width) - kLodOfBoxVariance), width});
+  int atoms = 0;
+  for (const VmfLobeShape& l : t.lookup(probe)) {
+    if (!(l.alpha > 0.0)) continue;
+    ++atoms;
+    EXPECT_NEAR(l.alpha, 0.5, 1e-7);
+    EXPECT_EQ(l.kappa, 1e6);
+    EXPECT_LT(std::min((l.mu - a).norm(), (l.mu - b).norm()), 1e-6);
+  }
+  EXPECT_EQ(atoms, 2);
+}
+
 TEST(FilteredNdfTextures, RefuseTheWrongKind) {
   const NormalMap map = test::random_normal_map(4, 4, 2);
   const Asset a = sh_asset(map, 2);
