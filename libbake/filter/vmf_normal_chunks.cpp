@@ -39,17 +39,19 @@ uint64_t cell_code(const Vec3& n) {
 
 std::vector<WeightedNormal> vmf_normal_chunks(std::span<const WeightedNormal> normals, size_t max_chunks) {
   if (max_chunks < 1) throw Error(ExitCode::runtime_failure, "internal: vMF normal chunks with no chunk allowed");
-  // Normals sorted by the Morton code of their cell, then by value: identical normals are neighbours.
+  // Normals sorted by the Morton code of their cell, then by value, then by position: identical normals are
+  // neighbours in their given order, as a stable sort leaves them, without its buffer of up to the whole order (at
+  // the top level that buffer set the bake's peak memory).
   struct Entry {
     uint64_t code;
     const WeightedNormal* normal;
   };
   std::vector<Entry> order(normals.size());
   for (size_t i = 0; i < normals.size(); ++i) order[i] = {cell_code(normals[i].n), &normals[i]};
-  const auto value = [](const Entry& e) {
-    return std::tuple(e.code, e.normal->n.x(), e.normal->n.y(), e.normal->n.z());
+  const auto key = [](const Entry& e) {
+    return std::tuple(e.code, e.normal->n.x(), e.normal->n.y(), e.normal->n.z(), e.normal);
   };
-  std::stable_sort(order.begin(), order.end(), [&](const Entry& a, const Entry& b) { return value(a) < value(b); });
+  std::sort(order.begin(), order.end(), [&](const Entry& a, const Entry& b) { return key(a) < key(b); });
   const auto same_normal = [](const Entry& a, const Entry& b) { return a.normal->n == b.normal->n; };
   // Atoms: the runs of identical normals. cells[k]: occupied cells of the 2^k grid. Neighbours in the order whose
   // codes first differ in bit pair p (bits 2p and 2p + 1, counted from the lowest) lie in different cells of the

@@ -178,10 +178,20 @@ double stored_log_likelihood(const NormalMap& map, const VmfLevel& level, int J,
   std::vector<double> ll(count);
   for_each_texel(int64_t(count), normals_per_texel(map, level.width, level.height), [&](int64_t t) {
     const uint32_t i = uint32_t(size_t(t) % level.width), j = uint32_t(size_t(t) / level.width);
-    thread_local std::vector<WeightedNormal> normals;  // reused: most texels of the fine levels are tiny
-    thread_local std::vector<float> unused;
-    gather(map, nullptr, g, i, j, normals, unused);
-    ll[size_t(t)] = vmf_mixture_log_likelihood(normals, decode_texel(level, i, j, J, kappa_max));
+    const std::vector<VmfComponent> mixture = decode_texel(level, i, j, J, kappa_max);
+    // The texel's normals in gather's order, kVmfSumChunk at a time: the E-step sums each chunk on its own and adds
+    // the chunks in order (vmf_e_step.h), so this is its sum over the gathered normals to the bit, without holding
+    // them all (the top level's texel covers the whole map: 8 MiB at 512^2 that stayed with the thread).
+    thread_local std::vector<WeightedNormal> chunk;  // reused: most texels of the fine levels are tiny
+    chunk.clear();
+    double sum = 0.0;
+    for (const MipWeight& y : g.wy[j])
+      for (const MipWeight& x : g.wx[i]) {
+        chunk.push_back({map.at(x.index, y.index).cast<double>(), x.weight * y.weight});
+        if (chunk.size() == kVmfSumChunk) sum += vmf_mixture_log_likelihood(chunk, mixture), chunk.clear();
+      }
+    if (!chunk.empty()) sum += vmf_mixture_log_likelihood(chunk, mixture);
+    ll[size_t(t)] = sum;
   });
   double total = 0.0;
   for (double v : ll) total += v;
