@@ -147,9 +147,10 @@ std::vector<VmfLobeShape> VmfTexture::lookup(const FootprintProbes& probes, std:
   std::vector<TexelWeight> texels;
   std::vector<double> deltas;
   const size_t delta_size = 4 + F;
+  std::vector<double> delta(delta_size);
   for (const auto& [p, read_weight] : reads) {
     const LevelBlend b = level_blend(levels(), p.lod);
-    std::vector<double> delta(delta_size, 0.0);
+    std::fill(delta.begin(), delta.end(), 0.0);
     for (const auto& [level, blend] : {std::pair{b.fine, 1.0 - b.t}, std::pair{b.coarse, b.t}}) {
       if (blend == 0.0) continue;
       const double weight = blend * read_weight;

@@ -16,13 +16,13 @@
 // A footprint probe of box width w is read as its quarters: 2 x 2 trilinear reads of width w / 2 at +-w / 4
 // along the texel axes, one level finer (the four boxes tile the probe's box; from a probe's level 1 up their
 // kernels' variance is the box's, w^2 / 12, below it the quarters' level is clamped at 0). Where a probe's level
-// is below 1 this samples the interpolated normal field at four points of
-// the box rather than one, so the deltas' spread is the field's spread over the footprint (the reference's NDF
-// there), not nothing; where it is coarser, each read's trilinear tent reaches ~2.2 w instead of ~3.5 w, so a
-// neighbour's sparkle leaks less into the pixel. Measured on the filtering report (4 spp against a 16 x 16
-// reference): middle sphere of bumps vmf8 0.0119 -> 0.0075, near sphere of metallic_flakes 0.033 -> 0.010; the
-// one loss is that map's distant sphere, where four reads of a level of a few random flakes per texel, merged,
-// lose to the coarser level's own fit. It costs ~1.5x the render time of one read per probe.
+// is below 1 this samples the interpolated normal field at four points of the box rather than one, so the deltas'
+// spread is the field's spread over the footprint (the reference's NDF there), not nothing; where it is coarser, each
+// read's trilinear tent reaches ~2.2 w instead of ~3.5 w, so a neighbour's sparkle leaks less into the pixel. Measured
+// on the filtering report (4 spp against a 16 x 16 reference): middle sphere of bumps vmf8 0.0119 -> 0.0075, near
+// sphere of metallic_flakes 0.033 -> 0.010; the one loss is that map's distant sphere, where four reads of a level of a
+// few random flakes per texel, merged, lose to the coarser level's own fit. It costs ~1.5x the render time of one read
+// per probe.
 #pragma once
 
 #include <span>

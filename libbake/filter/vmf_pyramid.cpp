@@ -23,17 +23,24 @@ LevelGeometry geometry(const NormalMap& map, uint32_t w, uint32_t h) {
   return {mip_texel_weights(w, map.width), mip_texel_weights(h, map.height)};
 }
 
+// visit(x, row, normal) for each normal texel (i, j) covers, with its area weight, rows outermost.
+template <class Visit>
+void for_each_texel_normal(const NormalMap& map, const LevelGeometry& g, uint32_t i, uint32_t j, Visit visit) {
+  for (const MipWeight& y : g.wy[j])
+    for (const MipWeight& x : g.wx[i])
+      visit(x.index, y.index, WeightedNormal{map.at(x.index, y.index).cast<double>(), x.weight * y.weight});
+}
+
 // The normals (and features) texel (i, j) covers, with their area weights.
 void gather(const NormalMap& map, const Image* features, const LevelGeometry& g, uint32_t i, uint32_t j,
             std::vector<WeightedNormal>& normals, std::vector<float>& texel_features) {
   normals.clear();
   texel_features.clear();
-  for (const MipWeight& y : g.wy[j])
-    for (const MipWeight& x : g.wx[i]) {
-      normals.push_back({map.at(x.index, y.index).cast<double>(), x.weight * y.weight});
-      if (features)
-        for (uint32_t c = 0; c < features->channels; ++c) texel_features.push_back(features->at(x.index, y.index, c));
-    }
+  for_each_texel_normal(map, g, i, j, [&](uint32_t x, uint32_t row, const WeightedNormal& n) {
+    normals.push_back(n);
+    if (features)
+      for (uint32_t c = 0; c < features->channels; ++c) texel_features.push_back(features->at(x, row, c));
+  });
 }
 
 void store_mixture(const std::vector<VmfComponent>& mixture, float* out) {
@@ -179,17 +186,17 @@ double stored_log_likelihood(const NormalMap& map, const VmfLevel& level, int J,
   for_each_texel(int64_t(count), normals_per_texel(map, level.width, level.height), [&](int64_t t) {
     const uint32_t i = uint32_t(size_t(t) % level.width), j = uint32_t(size_t(t) / level.width);
     const std::vector<VmfComponent> mixture = decode_texel(level, i, j, J, kappa_max);
-    // The texel's normals in gather's order, kVmfSumChunk at a time: the E-step sums each chunk on its own and adds
-    // the chunks in order (vmf_e_step.h), so this is its sum over the gathered normals to the bit, without holding
-    // them all (the top level's texel covers the whole map: 8 MiB at 512^2 that stayed with the thread).
+    // The texel's normals in gather's order (for_each_texel_normal), kVmfSumChunk at a time: the E-step sums each chunk
+    // on its own and adds the chunks in order (vmf_e_step.h), so this is its sum over the gathered normals to the bit,
+    // without holding them all (the top level's texel covers the whole map: 8 MiB at 512^2 that stayed with the
+    // thread).
     thread_local std::vector<WeightedNormal> chunk;  // reused: most texels of the fine levels are tiny
     chunk.clear();
     double sum = 0.0;
-    for (const MipWeight& y : g.wy[j])
-      for (const MipWeight& x : g.wx[i]) {
-        chunk.push_back({map.at(x.index, y.index).cast<double>(), x.weight * y.weight});
-        if (chunk.size() == kVmfSumChunk) sum += vmf_mixture_log_likelihood(chunk, mixture), chunk.clear();
-      }
+    for_each_texel_normal(map, g, i, j, [&](uint32_t, uint32_t, const WeightedNormal& n) {
+      chunk.push_back(n);
+      if (chunk.size() == kVmfSumChunk) sum += vmf_mixture_log_likelihood(chunk, mixture), chunk.clear();
+    });
     if (!chunk.empty()) sum += vmf_mixture_log_likelihood(chunk, mixture);
     ll[size_t(t)] = sum;
   });

@@ -115,7 +115,7 @@ TEST(FilteredNdfEffects, MagnifiedBumpyMapMatchesPlainNormalMapping) {
   EXPECT_LT(rmse("toksvig"), 1e-4 * mean(plain));
   // sh: what is left is the truncation of D at order 24. vmf reads each footprint at four points (its quarters,
   // filtered_ndf_textures.h), so it shades the small spread of the interpolated normals a 0.2-texel footprint
-  // covers, which plain normal mapping does not: it must stay close to mip and be no farther from the reference.
+  // covers, which plain normal mapping does not: it must stay close to mip and be closer to the reference.
   // Measured: sh24 0.31%, vmf2 0.51% of the mean; against a 16 x 16 reference vmf2 0.00081, mip 0.00134.
   const double sh = rmse({{"name", "sh"}, {"order", 24}, {"precision", "f32"}}),
                vmf = rmse({{"name", "vmf"}, {"lobes", 2}});
