@@ -8,7 +8,7 @@
 # scifi_panel_bevels.png (multi-lobe texels: flakes with their own tilts, bevels), all -Y, loaded with
 # `repair` (metallic_flakes has a texel with z < 0). Methods: plain mip, toksvig, sh (orders 2, 4, 8, 16) and vmf
 # (J = 1, 2, 4, 6, 8), rendered with --spp SPP (default 4: at 1 sample per pixel the spheres' error is mostly
-# silhouette aliasing against the 16 x 16 reference), and `render --reference` as the ground truth. Per method:
+# silhouette aliasing against the reference), and `render --reference` as the ground truth. Per method:
 # bake time and file size (`microbake bake` of that effect alone), render time and RMSE against the reference
 # (`microbake compare --format json`) on the whole image, on the plane's far field (the rows just below the
 # horizon) and on an interior crop of each sphere (no silhouette: near ~1.5, middle ~5, far ~60 texels per
@@ -16,11 +16,11 @@
 # examples/results/filtering/REPORT.md (between its accuracy markers), the plot accuracy.png (gnuplot) and
 # side-by-side pictures (oiiotool), installing gnuplot-nox and openimageio-tools through scripts/install-deps.sh.
 #
-#   bash scripts/report-filtering.sh [BUILD_DIR] [REFERENCE_N] [SPP]   # default build/, 16 (16 x 16 rays), 4
+#   bash scripts/report-filtering.sh [BUILD_DIR] [REFERENCE_N] [SPP]   # default build/, 64 (64 x 64 rays), 4
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build="${1:-build}"
-ref_n="${2:-16}"
+ref_n="${2:-64}"
 spp="${3:-4}"
 exe="$build/microbake"
 results=examples/results/filtering
@@ -92,9 +92,11 @@ done
 
 rows=""
 reference_times=""
-data="$work/accuracy.dat"
-: >"$data"
-declare -A floor=()
+# Plot data: one file per map and method family, "parameter bake_s bytes far_rmse" (parameter: the SH order or
+# the vMF lobe count; "-" for mip and toksvig).
+families=(mip toksvig sh vmf)
+plot_maps=()
+declare -A floor=() floor_far=()
 for entry in "${maps[@]}"; do
   IFS='|' read -r map path convention <<<"$entry"
   ref_line="| $map |"
@@ -114,7 +116,9 @@ for entry in "${maps[@]}"; do
   mid=$(crop_rmse "$work/$map.spheres.ref2.exr" "$work/$map.spheres.ref.exr" mid)
   distant=$(crop_rmse "$work/$map.spheres.ref2.exr" "$work/$map.spheres.ref.exr" distant)
   rows+="| $map | *reference floor* | | | | ${floor[plane]} | $far | | ${floor[spheres]} | $near | $mid | $distant | ${floor[env]} |"$'\n'
-  echo "\"$map\"" >>"$data"
+  floor_far[$map]=$far
+  plot_maps+=("$map")
+  for family in "${families[@]}"; do : >"$work/plot.$map.$family.dat"; done
   for m in "${methods[@]}"; do
     IFS='|' read -r name effect <<<"$m"
     for scene in plane spheres env; do
@@ -137,10 +141,10 @@ for entry in "${maps[@]}"; do
     mid=$(crop_rmse "$work/$map.spheres.$name.exr" "$work/$map.spheres.ref.exr" mid)
     distant=$(crop_rmse "$work/$map.spheres.$name.exr" "$work/$map.spheres.ref.exr" distant)
     rows+="| $map | $name | $bake_s | $bytes | ${render_s[plane]} | ${err[plane]} | $far | ${render_s[spheres]} | ${err[spheres]} | $near | $mid | $distant | ${err[env]} |"$'\n'
-    echo "$name $bake_s $bytes ${err[plane]} $far ${err[spheres]}" >>"$data"
+    family=${name%%[0-9]*} parameter=${name#"${name%%[0-9]*}"}
+    echo "${parameter:--} $bake_s $bytes $far" >>"$work/plot.$map.$family.dat"
     echo "report-filtering: $map $name bake ${bake_s} s, $bytes bytes, rmse plane ${err[plane]} (far $far), spheres ${err[spheres]} ($near, $mid, $distant), env ${err[env]}" >&2
   done
-  printf '\n\n' >>"$data"
   # Pictures: reference | mip | toksvig | sh8 | vmf4 (sRGB-encoded PNGs, clamped like `render -o .png`).
   for scene in plane spheres env; do
     oiiotool "$work/$map.$scene.ref.exr" "$work/$map.$scene.mip.exr" "$work/$map.$scene.toksvig.exr" \
@@ -149,23 +153,33 @@ for entry in "${maps[@]}"; do
   done
 done
 
-# The plot: far-field RMSE of the plane against bake time and against file size, one series per map.
-gnuplot <<EOG
-set terminal pngcairo size 900,420 font ",9" noenhanced
-set output "$results/accuracy.png"
-set multiplot layout 1,2 title "Receding plane, far field: RMSE vs --reference ${ref_n}x${ref_n} (lower is better)"
-set logscale x
-set grid
-set key top right
-set ylabel "RMSE (linear radiance)"
-set xlabel "bake time (s)"
-plot for [i=0:*] "$data" index i using 2:5 with points pt 7 ps 1.2 title columnheader(1), \
-     for [i=0:*] "$data" index i using 2:5:1 with labels offset 0.8,0.5 font ",8" notitle
-set xlabel "file size (bytes)"
-plot for [i=0:*] "$data" index i using 3:5 with points pt 7 ps 1.2 title columnheader(1), \
-     for [i=0:*] "$data" index i using 3:5:1 with labels offset 0.8,0.5 font ",8" notitle
-unset multiplot
-EOG
+# The plot: far-field RMSE of the plane against bake time (top row) and file size (bottom row), one column of
+# panels per map (44 labelled points on one pair of axes overlapped). Each family is one series; a point's label is
+# its SH order or vMF lobe count, and the dashed line is that map's reference floor.
+plot_panel() { # MAP X_COLUMN
+  local series="" family style offset
+  for family in "${families[@]}"; do
+    # SH labels below left of their points, vMF labels above right: the two series cross without their labels.
+    case $family in sh) style="linespoints" offset="-0.9,-0.6" ;; vmf) style="linespoints" offset="0.9,0.5" ;;
+      *) style="points" offset="0,0" ;; esac
+    series+="\"$work/plot.$1.$family.dat\" using $2:4 with $style pt 7 ps 1.1 title \"$family\", "
+    series+="\"$work/plot.$1.$family.dat\" using $2:4:(strcol(1) eq \"-\" ? \"\" : strcol(1)) with labels"
+    series+=" offset $offset font \",8\" notitle, "
+  done
+  echo "set title \"$1\"; plot ${series}${floor_far[$1]} with lines dt 2 lc rgb \"gray40\" title \"reference floor\""
+}
+{
+  echo "set terminal pngcairo size $((300 * ${#plot_maps[@]} + 80)),760 font \",9\" noenhanced"
+  echo "set output \"$results/accuracy.png\""
+  echo "set multiplot layout 2,${#plot_maps[@]} title \"Receding plane, far field: RMSE vs --reference ${ref_n}x${ref_n} (lower is better; labels: SH order, vMF lobes)\""
+  echo "set logscale xy; set grid; set key below horizontal font \",8\"; set ylabel \"far-field RMSE\""
+  echo "set xlabel \"bake time (s)\""
+  for map in "${plot_maps[@]}"; do plot_panel "$map" 2; done
+  echo "set xlabel \"file size (bytes)\"; set format x \"%.0e\""
+  for map in "${plot_maps[@]}"; do plot_panel "$map" 3; done
+  echo "unset multiplot"
+} >"$work/accuracy.gnuplot"
+gnuplot "$work/accuracy.gnuplot"
 
 cpu=$(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //')
 block=$(cat <<EOB

@@ -100,6 +100,13 @@ VmfTexture VmfTexture::from_asset(const Asset& asset) {
   return t;
 }
 
+size_t VmfTexture::box_level(double width) const {
+  // The level whose texels are at most a quarter of the width: floor(log2(w / 4)); 0 (not a box read) below 1
+  // or where the pyramid has no such level.
+  const double level = std::floor(std::log2(width / kVmfBoxTexelsPerWidth));
+  return level >= 1.0 && level <= double(levels() - 1) ? size_t(level) : 0;
+}
+
 std::vector<VmfLobeShape> VmfTexture::lookup(const Vec2& uv, double lod, std::vector<double>* features) const {
   FootprintProbes probe;
   probe.push_back({uv, lod});
@@ -108,18 +115,34 @@ std::vector<VmfLobeShape> VmfTexture::lookup(const Vec2& uv, double lod, std::ve
 
 std::vector<VmfLobeShape> VmfTexture::lookup(const FootprintProbes& probes, std::vector<double>* features) const {
   const size_t J = size_t(lobes_), F = size_t(features_);
-  // Each probe of a box width w is read as its quarters (see the header): 2 x 2 trilinear lookups of width w / 2
-  // at +-w / 4 along the texel axes, one level finer, each with a quarter of the probe's weight. A probe of no
-  // finite width, or not finite itself, is read as it is.
+  // Each probe of a box width w (see the header): at least 8 texels wide, the texels of level floor(log2(w / 4))
+  // its box covers, weighted by their overlap; narrower, its quarters, 2 x 2 trilinear lookups of width w / 2 at
+  // +-w / 4 along the texel axes, one level finer, each with a quarter of the probe's weight. A probe of no finite
+  // width, or not finite itself, is read as it is.
   struct Read {
     FootprintProbe at;
     double weight;
   };
+  // The texels of levels >= 1 the lookup touches, with their summed weights (neighbouring reads share most of
+  // their coarse texels: summed after sorting below), and each read's level-0 part as one delta:
+  // [alpha, alpha n, alpha y].
+  struct TexelWeight {
+    size_t level, texel;
+    double weight;
+  };
+  std::vector<TexelWeight> texels;
   std::vector<Read> reads;
   const double probe_weight = 1.0 / double(probes.size());
   for (const FootprintProbe& p : probes) {
     if (!(p.width > 0.0) || !std::isfinite(p.width) || !finite(p.uv, p.lod)) {
       reads.push_back({p, probe_weight});
+      continue;
+    }
+    if (const size_t level = box_level(p.width); level > 0) {
+      const uint32_t w = widths_[level], h = heights_[level];
+      const double half_x = 0.5 * p.width * w / widths_[0], half_y = 0.5 * p.width * h / heights_[0];
+      for (const TextureTap& tap : box_taps(w, h, p.uv, half_x, half_y))
+        texels.push_back({level, size_t(tap.row) * w + tap.x, probe_weight * tap.weight});
       continue;
     }
     const Vec2 step(0.25 * p.width / widths_[0], 0.25 * p.width / heights_[0]);
@@ -128,23 +151,16 @@ std::vector<VmfLobeShape> VmfTexture::lookup(const FootprintProbes& probes, std:
         reads.push_back({{p.uv + Vec2(dx * step.x(), dy * step.y()), std::max(0.0, p.lod - 1.0), 0.5 * p.width},
                          0.25 * probe_weight});
   }
-  bool all_finite = !reads.empty(), finest = false;
+  bool all_finite = true, finest = false;
   for (const auto& [p, weight] : reads) {
     all_finite = all_finite && finite(p.uv, p.lod);
     finest = finest || (finite(p.uv, p.lod) && level_blend(levels(), p.lod).fine == 0);
   }
   const size_t slots = J + (finest ? 1 : 0);
-  if (!all_finite) {
+  if (!all_finite || (reads.empty() && texels.empty())) {
     if (features) features->assign(slots * F, 0.0);
     return std::vector<VmfLobeShape>(slots);
   }
-  // The texels of levels >= 1 the reads touch, with their summed trilinear weights (neighbouring reads share most
-  // of their coarse texels), and each read's level-0 part as one delta: [alpha, alpha n, alpha y].
-  struct TexelWeight {
-    size_t level, texel;
-    double weight;
-  };
-  std::vector<TexelWeight> texels;
   std::vector<double> deltas;
   const size_t delta_size = 4 + F;
   std::vector<double> delta(delta_size);
@@ -163,11 +179,7 @@ std::vector<VmfLobeShape> VmfTexture::lookup(const FootprintProbes& probes, std:
             delta[4 + q % F] += weight * tap.weight * feature_levels_[0][texel * J * F + q];
           continue;
         }
-        const auto same = [&](const TexelWeight& t) { return t.level == level && t.texel == texel; };
-        if (const auto it = std::find_if(texels.begin(), texels.end(), same); it != texels.end())
-          it->weight += weight * tap.weight;
-        else
-          texels.push_back({level, texel, weight * tap.weight});
+        texels.push_back({level, texel, weight * tap.weight});
       }
     }
     if (!(delta[0] > 0.0)) continue;
@@ -182,6 +194,18 @@ std::vector<VmfLobeShape> VmfTexture::lookup(const FootprintProbes& probes, std:
       for (int a = 1; a <= 3; ++a) delta[size_t(a)] *= delta[0] / len;
     deltas.insert(deltas.end(), delta.begin(), delta.end());
   }
+  // One entry per texel, in (level, texel) order (deterministic whatever order the reads touched them in).
+  std::sort(texels.begin(), texels.end(), [](const TexelWeight& a, const TexelWeight& b) {
+    return a.level != b.level ? a.level < b.level : a.texel < b.texel;
+  });
+  size_t unique = 0;
+  for (size_t i = 0; i < texels.size(); ++i) {
+    if (unique > 0 && texels[unique - 1].level == texels[i].level && texels[unique - 1].texel == texels[i].texel)
+      texels[unique - 1].weight += texels[i].weight;
+    else
+      texels[unique++] = texels[i];
+  }
+  texels.resize(unique);
   // Every texel's lobes and every delta, merged by direction (vmf_lobe_merge.h; deviation [Han07]: Alg. 7.2
   // blends slot by slot).
   std::vector<double> scaled_features(texels.size() * J * F);

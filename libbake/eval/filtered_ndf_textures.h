@@ -13,16 +13,22 @@
 // lobe per texel, in varying slots) enters the merge as one delta per read: weight 1 - t, kappa_max, at the
 // renormalised interpolated normal, as plain normal mapping shades it. Deviation [Han07]: Alg. 7.2 blends level 0
 // per slot like any other level.
-// A footprint probe of box width w is read as its quarters: 2 x 2 trilinear reads of width w / 2 at +-w / 4
-// along the texel axes, one level finer (the four boxes tile the probe's box; from a probe's level 1 up their
-// kernels' variance is the box's, w^2 / 12, below it the quarters' level is clamped at 0). Where a probe's level
-// is below 1 this samples the interpolated normal field at four points of the box rather than one, so the deltas'
-// spread is the field's spread over the footprint (the reference's NDF there), not nothing; where it is coarser, each
-// read's trilinear tent reaches ~2.2 w instead of ~3.5 w, so a neighbour's sparkle leaks less into the pixel. Measured
-// on the filtering report (4 spp against a 16 x 16 reference): middle sphere of bumps vmf8 0.0119 -> 0.0075, near
-// sphere of metallic_flakes 0.033 -> 0.010; the one loss is that map's distant sphere, where four reads of a level of a
-// few random flakes per texel, merged, lose to the coarser level's own fit. It costs ~1.5x the render time of one read
-// per probe.
+// A footprint probe of box width w >= 8 texels reads the texels its box covers at level floor(log2(w / 4)) (texels
+// of 1/8 to 1/4 of the width), each weighted by its overlap with the box (texture_taps.h box_taps): the kernel is
+// the box itself, widened by at most a quarter of its width (variance (w^2 + s^2) / 12 for texels of size s <= w / 4,
+// within 7% of the box's w^2 / 12), where a trilinear read's tent reaches ~3.5 w. A wider kernel reads a
+// neighbour's sparkles into the footprint; a sharper mixture (more lobes) shades them more faithfully, so with a
+// trilinear kernel more lobes could lose to fewer on a distant sphere (measured on the filtering report against
+// 64 x 64-ray references, 4 spp: metallic_flakes vmf8 0.0255 where vmf6 gave 0.0183; with the box read the errors
+// fall with J on every map, flakes vmf8 0.0136).
+// A narrower probe is read as its quarters: 2 x 2 trilinear reads of width w / 2 at +-w / 4 along the texel axes,
+// one level finer (the four boxes tile the probe's box; from a probe's level 1 up their kernels' variance is the
+// box's, w^2 / 12, below it the quarters' level is clamped at 0). Where a probe's level is below 1 this samples
+// the interpolated normal field at four points of the box rather than one, so the deltas' spread is the field's
+// spread over the footprint (the reference's NDF there), not nothing; where it is coarser, each read's trilinear
+// tent reaches ~2.2 w instead of ~3.5 w. Measured on the filtering report (4 spp against a 16 x 16 reference):
+// middle sphere of bumps vmf8 0.0119 -> 0.0075, near sphere of metallic_flakes 0.033 -> 0.010. It costs ~1.5x the
+// render time of one read per probe.
 #pragma once
 
 #include <span>
@@ -65,6 +71,9 @@ class ShNdfTexture {
   std::vector<double> window_;
 };
 
+// A probe at least 2 x this many texels wide is read as a box at a level of 1 / this of its width or finer.
+inline constexpr double kVmfBoxTexelsPerWidth = 4.0;
+
 class VmfTexture {
  public:
   // Error(invalid_input) when the asset is not of kind `vmf`.
@@ -78,11 +87,15 @@ class VmfTexture {
   // delta joins the merge (see above); features (when non-null) receives one F-vector y_j per returned lobe
   // (already divided by the interpolated alpha; 0 for an empty slot). NaN uv or lod give J empty lobes.
   std::vector<VmfLobeShape> lookup(const Vec2& uv, double lod, std::vector<double>* features = nullptr) const;
-  // The same over an anisotropic footprint: every probe read as its quarters (above), their lobes merged, so still
-  // J lobes, + 1 where a read reaches level 0 (a probe below LOD 2). Any non-finite probe gives J empty lobes.
+  // The same over an anisotropic footprint: every probe read as its box or its quarters (above), their lobes
+  // merged, so still J lobes, + 1 where a read reaches level 0 (a probe below LOD 2). Any non-finite probe gives
+  // J empty lobes.
   std::vector<VmfLobeShape> lookup(const FootprintProbes& probes, std::vector<double>* features = nullptr) const;
 
  private:
+  // The level a probe of box width `width` (texels) reads as a box, or 0 where it is read as its quarters.
+  size_t box_level(double width) const;
+
   int lobes_ = 0, features_ = 0;
   double kappa_max_ = 0.0;
   std::vector<uint32_t> widths_, heights_;

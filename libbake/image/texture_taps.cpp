@@ -32,6 +32,21 @@ std::array<TextureTap, 4> bilinear_taps(uint32_t width, uint32_t height, const V
           TextureTap{xb, yb, ax * ay}};
 }
 
+std::vector<TextureTap> box_taps(uint32_t width, uint32_t height, const Vec2& uv, double half_x, double half_y) {
+  const Vec2 c = texel_coordinates(uv, width, height);
+  const double x0 = c.x() - half_x, x1 = c.x() + half_x, y0 = c.y() - half_y, y1 = c.y() + half_y;
+  const double area = (x1 - x0) * (y1 - y0);
+  std::vector<TextureTap> taps;
+  for (double row = std::floor(y0); row < y1; row += 1.0) {
+    const double cover_y = std::min(row + 1.0, y1) - std::max(row, y0);
+    for (double x = std::floor(x0); x < x1; x += 1.0) {
+      const double cover_x = std::min(x + 1.0, x1) - std::max(x, x0);
+      taps.push_back({wrap_index(int64_t(x), width), wrap_index(int64_t(row), height), cover_x * cover_y / area});
+    }
+  }
+  return taps;
+}
+
 LevelBlend level_blend(size_t levels, double lod) {
   const double top = double(levels - 1);
   const double l = std::clamp(lod, 0.0, top);

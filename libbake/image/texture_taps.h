@@ -1,12 +1,14 @@
-// Where a bilinear or trilinear texture lookup reads, independently of what the texels hold: the four texels
+// Where a bilinear, box or trilinear texture lookup reads, independently of what the texels hold: the four texels
 // and weights of a bilinear lookup (texel centres at integer + 0.5, wrapping at the borders, uv in the
-// conventions of normal_map.h), and the two MIP levels and blend of a trilinear one. Every pyramid lookup
+// conventions of normal_map.h), the texels an axis-aligned box covers weighted by their overlap, and the two MIP
+// levels and blend of a trilinear one. Every pyramid lookup
 // (normal MIP maps, SH NDF pyramids, vMF mixture maps) uses these, so all filter the same way.
 #pragma once
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "libbake/core/eigen.h"
 
@@ -25,6 +27,12 @@ Vec2 texel_coordinates(const Vec2& uv, uint32_t width, uint32_t height);
 // matters (tiling), taken before scaling so that huge uv keep their texel index. uv must be finite, the size
 // non-zero (callers check).
 std::array<TextureTap, 4> bilinear_taps(uint32_t width, uint32_t height, const Vec2& uv);
+
+// The texels of a width x height level that the box centred at uv, of half widths (half_x, half_y) in that
+// level's texels, overlaps, each weighted by its overlap area over the box's (the weights sum to 1; a texel the
+// box covers more than once through wrapping appears once per cover). Half widths must be finite and > 0;
+// the caller bounds them (the loop visits (2 half + 2)^2 texels at most).
+std::vector<TextureTap> box_taps(uint32_t width, uint32_t height, const Vec2& uv, double half_x, double half_y);
 
 struct LevelBlend {
   size_t fine, coarse;  // levels to read (coarse == fine when the blend is 0)
