@@ -189,7 +189,7 @@ def main():
              "footprint, anisotropic probes, `--max-probes 16`). Bytes: the baked .mbk files the render reads; for "
              "brute force and for plain normal mapping (no asset) the source maps' files. A verdict compares the "
              "effect's time with the time brute force needs for the same RMSE (log-log interpolation between "
-             "brute-force points). Image sizes are chosen to keep the run near 10 minutes on 2 shared cores: "
+             "brute-force points). Image sizes are chosen to keep the run near 12 minutes on 2 shared cores: "
              "the scenes are rendered at the size given under each heading (glints: the centre of the "
              "example's view at the example's pixel size, because a glint lookup costs in proportion to its "
              "footprint's texels, so a smaller image of the whole view would cost more per pixel, not less).",

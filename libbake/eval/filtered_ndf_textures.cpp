@@ -101,10 +101,17 @@ VmfTexture VmfTexture::from_asset(const Asset& asset) {
 }
 
 size_t VmfTexture::box_level(double width) const {
-  // The level whose texels are at most a quarter of the width: floor(log2(w / 4)); 0 (not a box read) below 1
-  // or where the pyramid has no such level.
-  const double level = std::floor(std::log2(width / kVmfBoxTexelsPerWidth));
-  return level >= 1.0 && level <= double(levels() - 1) ? size_t(level) : 0;
+  // The coarsest level whose texels (widths_[0] / widths_[k] by heights_[0] / heights_[k] finest texels: 2^k on
+  // power-of-two sides) are at most a quarter of the width on both axes; 0 (no box read) where level 1's are wider
+  // already. The box then spans at most ~8 of its texels per axis, or the whole level where that is smaller
+  // (box_taps folds the wrap), so a read touches at most ~81 texels whatever the width.
+  size_t level = 0;
+  for (size_t k = 1; k < levels(); ++k) {
+    const double texel = std::max(double(widths_[0]) / double(widths_[k]), double(heights_[0]) / double(heights_[k]));
+    if (!(texel <= width / kVmfBoxTexelsPerWidth)) break;
+    level = k;
+  }
+  return level;
 }
 
 std::vector<VmfLobeShape> VmfTexture::lookup(const Vec2& uv, double lod, std::vector<double>* features) const {
@@ -115,8 +122,9 @@ std::vector<VmfLobeShape> VmfTexture::lookup(const Vec2& uv, double lod, std::ve
 
 std::vector<VmfLobeShape> VmfTexture::lookup(const FootprintProbes& probes, std::vector<double>* features) const {
   const size_t J = size_t(lobes_), F = size_t(features_);
-  // Each probe of a box width w (see the header): at least 8 texels wide, the texels of level floor(log2(w / 4))
-  // its box covers, weighted by their overlap; narrower, its quarters, 2 x 2 trilinear lookups of width w / 2 at
+  // Each probe of a box width w (see the header): at least 8 texels wide, the texels its box covers at the
+  // coarsest level whose texels are at most w / 4 (box_level), weighted by their overlap; narrower, its quarters, 2 x 2
+  // trilinear lookups of width w / 2 at
   // +-w / 4 along the texel axes, one level finer, each with a quarter of the probe's weight. A probe of no finite
   // width, or not finite itself, is read as it is.
   struct Read {

@@ -13,14 +13,15 @@
 // lobe per texel, in varying slots) enters the merge as one delta per read: weight 1 - t, kappa_max, at the
 // renormalised interpolated normal, as plain normal mapping shades it. Deviation [Han07]: Alg. 7.2 blends level 0
 // per slot like any other level.
-// A footprint probe of box width w >= 8 texels reads the texels its box covers at level floor(log2(w / 4)) (texels
-// of 1/8 to 1/4 of the width), each weighted by its overlap with the box (texture_taps.h box_taps): the kernel is
-// the box itself, widened by at most a quarter of its width (variance (w^2 + s^2) / 12 for texels of size s <= w / 4,
-// within 7% of the box's w^2 / 12), where a trilinear read's tent reaches ~3.5 w. A wider kernel reads a
-// neighbour's sparkles into the footprint; a sharper mixture (more lobes) shades them more faithfully, so with a
-// trilinear kernel more lobes could lose to fewer on a distant sphere (measured on the filtering report against
-// 64 x 64-ray references, 4 spp: metallic_flakes vmf8 0.0255 where vmf6 gave 0.0183; with the box read the errors
-// fall with J on every map, flakes vmf8 0.0136).
+// A footprint probe of box width w >= 8 texels reads the texels its box covers at the coarsest level whose texels
+// are at most w / 4 (texels of size s, 1/8 to 1/4 of the width on power-of-two maps), each weighted by its overlap
+// with the box (texture_taps.h box_taps): the kernel reaches at most s <= w / 4 beyond each edge of the box (a
+// trilinear read's tent reaches ~3.5 w in all), and its variance per axis is w^2 / 12 + d (1 - d) s^2 for a box
+// edge at fraction d of a texel: (w^2 + 2 s^2) / 12 on average, 12.5% above the box's at s = w / 4, 3% at w / 8.
+// A wider kernel reads a neighbour's sparkles into the footprint; a sharper mixture (more lobes) shades them more
+// faithfully, so with trilinear kernels more lobes could lose to fewer on a distant sphere (the filtering report's
+// distant sphere against 64 x 64-ray references, 4 spp: metallic_flakes vmf8 0.0255 where vmf6 gave 0.0183); with
+// the box read the errors fall with J on every map there (flakes vmf6 0.0170, vmf8 0.0132).
 // A narrower probe is read as its quarters: 2 x 2 trilinear reads of width w / 2 at +-w / 4 along the texel axes,
 // one level finer (the four boxes tile the probe's box; from a probe's level 1 up their kernels' variance is the
 // box's, w^2 / 12, below it the quarters' level is clamped at 0). Where a probe's level is below 1 this samples
@@ -71,7 +72,8 @@ class ShNdfTexture {
   std::vector<double> window_;
 };
 
-// A probe at least 2 x this many texels wide is read as a box at a level of 1 / this of its width or finer.
+// A probe at least 2 x this many texels wide is read as a box, at the coarsest level whose texels are at most
+// 1 / this of its width.
 inline constexpr double kVmfBoxTexelsPerWidth = 4.0;
 
 class VmfTexture {

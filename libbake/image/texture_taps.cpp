@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace mbk {
 namespace {
@@ -11,6 +12,26 @@ namespace {
 uint32_t wrap_index(int64_t i, int64_t n) {
   const int64_t m = i % n;
   return uint32_t(m < 0 ? m + n : m);
+}
+
+// The overlaps (in texels) of [lo, hi) with the texels of a wrapping axis of n texels, folded modulo n: one entry
+// per texel met.
+std::vector<std::pair<uint32_t, double>> axis_overlaps(double lo, double hi, uint32_t n) {
+  std::vector<std::pair<uint32_t, double>> overlaps;
+  if (std::ceil(hi - lo) + 1.0 < double(n)) {  // fewer texels than the axis: none is met twice
+    for (double t = std::floor(lo); t < hi; t += 1.0)
+      overlaps.emplace_back(wrap_index(int64_t(t), n), std::min(t + 1.0, hi) - std::max(t, lo));
+    return overlaps;
+  }
+  // The box covers the axis `full` times and then a rest shorter than it.
+  const double full = std::floor((hi - lo) / n);
+  std::vector<double> cover(n, full);
+  const double rest = lo + full * n;
+  for (double t = std::floor(rest); t < hi; t += 1.0)
+    cover[wrap_index(int64_t(t), n)] += std::min(t + 1.0, hi) - std::max(t, rest);
+  for (uint32_t i = 0; i < n; ++i)
+    if (cover[i] > 0.0) overlaps.emplace_back(i, cover[i]);
+  return overlaps;
 }
 
 }  // namespace
@@ -33,17 +54,16 @@ std::array<TextureTap, 4> bilinear_taps(uint32_t width, uint32_t height, const V
 }
 
 std::vector<TextureTap> box_taps(uint32_t width, uint32_t height, const Vec2& uv, double half_x, double half_y) {
+  if (!(half_x > 0.0) || !(half_y > 0.0) || !std::isfinite(half_x) || !std::isfinite(half_y)) return {};
   const Vec2 c = texel_coordinates(uv, width, height);
   const double x0 = c.x() - half_x, x1 = c.x() + half_x, y0 = c.y() - half_y, y1 = c.y() + half_y;
   const double area = (x1 - x0) * (y1 - y0);
+  const auto xs = axis_overlaps(x0, x1, width);
+  const auto ys = axis_overlaps(y0, y1, height);
   std::vector<TextureTap> taps;
-  for (double row = std::floor(y0); row < y1; row += 1.0) {
-    const double cover_y = std::min(row + 1.0, y1) - std::max(row, y0);
-    for (double x = std::floor(x0); x < x1; x += 1.0) {
-      const double cover_x = std::min(x + 1.0, x1) - std::max(x, x0);
-      taps.push_back({wrap_index(int64_t(x), width), wrap_index(int64_t(row), height), cover_x * cover_y / area});
-    }
-  }
+  taps.reserve(xs.size() * ys.size());
+  for (const auto& [row, cover_y] : ys)
+    for (const auto& [x, cover_x] : xs) taps.push_back({x, row, cover_x * cover_y / area});
   return taps;
 }
 

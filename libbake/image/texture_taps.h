@@ -29,9 +29,9 @@ Vec2 texel_coordinates(const Vec2& uv, uint32_t width, uint32_t height);
 std::array<TextureTap, 4> bilinear_taps(uint32_t width, uint32_t height, const Vec2& uv);
 
 // The texels of a width x height level that the box centred at uv, of half widths (half_x, half_y) in that
-// level's texels, overlaps, each weighted by its overlap area over the box's (the weights sum to 1; a texel the
-// box covers more than once through wrapping appears once per cover). Half widths must be finite and > 0;
-// the caller bounds them (the loop visits (2 half + 2)^2 texels at most).
+// level's texels, overlaps, each weighted by its overlap area over the box's (the weights sum to 1). A box that
+// wraps onto a texel more than once gives it one tap with the summed overlap, so there are at most
+// min(width, 2 half_x + 2) x min(height, 2 half_y + 2) taps. Empty when a half width is not finite and > 0.
 std::vector<TextureTap> box_taps(uint32_t width, uint32_t height, const Vec2& uv, double half_x, double half_y);
 
 struct LevelBlend {

@@ -1,9 +1,11 @@
 // box_taps (libbake/image/texture_taps.h) against brute force: each texel's weight is the fraction of a dense
 // lattice of points in the box that falls in it (wrapping at the borders), for boxes narrower and wider than a
-// texel, off the texel grid and on it, and wider than the whole level; the weights sum to 1.
+// texel, off the texel grid and on it, and wider than the whole level (folded: one tap per texel, so a box
+// thousands of levels wide still has one tap per texel of the level); the weights sum to 1.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <map>
 #include <utility>
 
@@ -25,10 +27,14 @@ TEST(TextureTaps, BoxTapsWeighTexelsByTheirOverlapWithTheBox) {
   for (const Box& box : boxes) {
     std::map<std::pair<uint32_t, uint32_t>, double> weights, brute;
     double sum = 0.0;
-    for (const TextureTap& tap : box_taps(kWidth, kHeight, box.uv, box.half_x, box.half_y)) {
+    const std::vector<TextureTap> taps = box_taps(kWidth, kHeight, box.uv, box.half_x, box.half_y);
+    for (const TextureTap& tap : taps) {
+      EXPECT_EQ(weights.count({tap.x, tap.row}), 0u) << "a texel met twice is one tap";
       weights[{tap.x, tap.row}] += tap.weight;
       sum += tap.weight;
     }
+    EXPECT_LE(taps.size(),
+              std::min(double(kWidth), 2 * box.half_x + 2) * std::min(double(kHeight), 2 * box.half_y + 2));
     EXPECT_NEAR(sum, 1.0, 1e-12);
     const Vec2 c = texel_coordinates(box.uv, kWidth, kHeight);
     for (int b = 0; b < kLattice; ++b)
@@ -42,6 +48,25 @@ TEST(TextureTaps, BoxTapsWeighTexelsByTheirOverlapWithTheBox) {
       EXPECT_NEAR(weights[texel], weight, 4.0 / kLattice) << texel.first << "," << texel.second;
     for (const auto& [texel, weight] : weights) EXPECT_TRUE(brute.count(texel) || weight < 1e-12);
   }
+}
+
+TEST(TextureTaps, BoxThousandsOfLevelsWideIsOneTapPerTexelOfNearlyEqualWeight) {
+  // 8000.6 x 2e6 texels over an 8 x 6 level: every texel is covered 1000 or 1001 times across, 333333 or 333334
+  // down, so each weight is within a cover of 1 / 48 (a lattice would alias here, hence the closed form).
+  const std::vector<TextureTap> taps = box_taps(8, 6, Vec2(0.3, 0.8), 4000.3, 1e6);
+  ASSERT_EQ(taps.size(), 48u);
+  double sum = 0.0;
+  for (const TextureTap& tap : taps) {
+    EXPECT_NEAR(tap.weight, 1.0 / 48.0, (1.0 / 1000.0 + 1.0 / 333333.0) / 48.0);
+    sum += tap.weight;
+  }
+  EXPECT_NEAR(sum, 1.0, 1e-12);
+}
+
+TEST(TextureTaps, BoxOfNoWidthHasNoTaps) {
+  EXPECT_TRUE(box_taps(4, 4, Vec2(0.3, 0.3), 0.0, 1.0).empty());
+  EXPECT_TRUE(box_taps(4, 4, Vec2(0.3, 0.3), 1.0, NAN).empty());
+  EXPECT_TRUE(box_taps(4, 4, Vec2(0.3, 0.3), INFINITY, 1.0).empty());
 }
 
 TEST(TextureTaps, BoxOfOneTexelOnItsCentreIsThatTexel) {
