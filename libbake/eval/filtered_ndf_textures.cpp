@@ -123,10 +123,9 @@ std::vector<VmfLobeShape> VmfTexture::lookup(const Vec2& uv, double lod, std::ve
 std::vector<VmfLobeShape> VmfTexture::lookup(const FootprintProbes& probes, std::vector<double>* features) const {
   const size_t J = size_t(lobes_), F = size_t(features_);
   // Each probe of a box width w (see the header): at least 8 texels wide, the texels its box covers at the
-  // coarsest level whose texels are at most w / 4 (box_level), weighted by their overlap; narrower, its quarters, 2 x 2
-  // trilinear lookups of width w / 2 at
-  // +-w / 4 along the texel axes, one level finer, each with a quarter of the probe's weight. A probe of no finite
-  // width, or not finite itself, is read as it is.
+  // coarsest level whose texels are at most w / 4 (box_level), weighted by their overlap; narrower, its quarters,
+  // 2 x 2 trilinear lookups of width w / 2 at +-w / 4 along the texel axes, one level finer, each with a quarter of
+  // the probe's weight. A probe of no finite width, or not finite itself, is read as it is.
   struct Read {
     FootprintProbe at;
     double weight;
